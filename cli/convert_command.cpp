@@ -1,0 +1,127 @@
+#include "convert_command.hpp"
+
+#include "railodd/ingest/dump.hpp"
+#include "railodd/ingest/ogr_reader.hpp"
+#include "railodd/ingest/osm_reader.hpp"
+#include "railodd/util/errors.hpp"
+#include "railodd/util/output_stage.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+namespace railodd::cli {
+
+namespace fs = std::filesystem;
+
+CLI::App* ConvertCommand::add(CLI::App& parent) {
+    CLI::App* app = parent.add_subcommand("convert", "Convert an OSM extract (or GIS vector file) of a route");
+    app->add_option("INPUT", opt_.input, ".osm, .osm.pbf, .osm.bz2, .osm.gz, .opl; or .geojson/.gpkg/.shp with --field-mapping")
+        ->required();
+    app->add_option("-o,--output", opt_.outdir, "Output directory")->required();
+    app->add_option("--bbox", opt_.bbox, "Select by bounding box W,S,E,N (degrees)");
+    app->add_option("--polygon", opt_.polygon, "Select by a GeoJSON (Multi)Polygon file");
+    app->add_option("--relation", opt_.relation, "Select the ways of an OSM rail route relation (id)");
+    app->add_option("--field-mapping", opt_.field_mapping, "YAML mapping of vector fields onto OSM tags");
+    app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    app->add_option("--feature-distance", opt_.feature_distance_m,
+                    "Keep point features and platforms within this many metres of a track")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    app->add_option("--station-distance", opt_.station_distance_m, "Keep stations and halts within this many metres")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    app->add_option("--threads", opt_.threads, "Threads decoding PBF (default: libosmium's choice)");
+    app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
+    return app;
+}
+
+void ConvertCommand::setup() {
+    const bool vector = ingest::is_vector_source(opt_.input);
+    if (vector && opt_.field_mapping.empty()) {
+        throw UsageError(opt_.input, "a GIS vector source needs --field-mapping FILE.yaml (see docs/field-mapping.md)");
+    }
+    if (!vector && !opt_.field_mapping.empty()) {
+        throw UsageError(opt_.input, "--field-mapping applies to GIS vector sources only, not OSM files");
+    }
+    if (!opt_.bbox.empty()) {
+        ingest::parse_bbox(opt_.bbox); // fail before any output directory is touched
+    }
+    if (opt_.threads > 0) {
+        // libosmium sizes its decoding pool from this on first use.
+        ::setenv("OSMIUM_POOL_THREADS", std::to_string(opt_.threads).c_str(), 1);
+    }
+}
+
+namespace {
+
+ingest::Selection make_selection(const ConvertOptions& o) {
+    ingest::Selection sel;
+    if (!o.bbox.empty()) {
+        sel.bbox = ingest::parse_bbox(o.bbox);
+    }
+    if (!o.polygon.empty()) {
+        sel.polygon = ingest::load_polygon_geojson(o.polygon);
+    }
+    sel.relation = o.relation;
+    return sel;
+}
+
+nlohmann::ordered_json make_report(const ingest::IngestResult& r, bool timings) {
+    nlohmann::ordered_json report;
+    report["railodd"] = {{"version", "0.1.0"}, {"command", "convert"}};
+    for (auto& [key, value] : ingest::report_sections(r).items()) {
+        report[key] = value;
+    }
+    if (timings) {
+        nlohmann::ordered_json t = nlohmann::ordered_json::object();
+        for (const auto& [phase, seconds] : r.timings) {
+            t[phase] = seconds;
+        }
+        report["timings_s"] = std::move(t);
+    }
+    return report;
+}
+
+void print_summary(const ingest::IngestResult& r, const std::vector<fs::path>& written) {
+    const auto& c = r.counts;
+    std::cout << "railodd convert: " << r.source << " (" << r.selection << ")\n"
+              << "  track ways: " << c.output_track_ways << " of " << c.input_track_ways << " in output, "
+              << (c.input_track_ways - c.output_track_ways) << " dropped\n"
+              << "  road ways:  " << c.output_road_ways << " of " << c.input_road_ways << "\n"
+              << "  features:   " << c.output_features << " of " << c.input_features << "\n";
+    for (const auto& p : written) {
+        std::cout << "  wrote " << p.string() << '\n';
+    }
+}
+
+} // namespace
+
+int ConvertCommand::run() {
+    // Phase 1: ingest the selected tracks, features and roads into the local frame.
+    const ingest::Selection selection = make_selection(opt_);
+    ingest::IngestResult result;
+    if (ingest::is_vector_source(opt_.input)) {
+        result = ingest::read_vector(opt_.input, opt_.field_mapping, selection);
+    } else {
+        ingest::IngestOptions io;
+        io.selection = selection;
+        io.road_corridor_m = opt_.road_corridor_m;
+        io.feature_distance_m = opt_.feature_distance_m;
+        io.station_distance_m = opt_.station_distance_m;
+        result = ingest::read_osm(opt_.input, io);
+    }
+
+    // Phase 2: stage every output, then move them into place together.
+    OutputStage stage(opt_.outdir);
+    stage.write_text("ingest.geojson", ingest::to_geojson(result));
+    stage.write_text("report.json", make_report(result, !opt_.no_timings).dump(2) + "\n");
+    print_summary(result, stage.commit());
+    return exit_ok;
+}
+
+} // namespace railodd::cli

@@ -1,0 +1,36 @@
+#pragma once
+// railodd convert INPUT -o OUTDIR: ingest (and, in later stages, fit, tag and
+// write OpenDRIVE) for one route.
+#include "command.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace railodd::cli {
+
+struct ConvertOptions {
+    std::string input;
+    std::string outdir;
+    std::string bbox;
+    std::string polygon;
+    std::optional<std::int64_t> relation;
+    std::string field_mapping;
+    double road_corridor_m = 300.0;
+    double feature_distance_m = 50.0;
+    double station_distance_m = 500.0;
+    unsigned threads = 0; // 0: libosmium's default pool size
+    bool no_timings = false;
+};
+
+class ConvertCommand : public Command {
+public:
+    CLI::App* add(CLI::App& parent) override;
+    void setup() override;
+    int run() override;
+
+private:
+    ConvertOptions opt_;
+};
+
+} // namespace railodd::cli

@@ -1,0 +1,53 @@
+// railodd: OpenStreetMap / GIS railway data to simulation maps and scenarios.
+#include "command.hpp"
+#include "convert_command.hpp"
+#include "sample_command.hpp"
+
+#include "railodd/util/errors.hpp"
+
+#include <iostream>
+#include <memory>
+#include <vector>
+
+int main(int argc, char** argv) {
+    using namespace railodd;
+    CLI::App app{"railodd: real GIS railway data to simulation-ready OpenDRIVE maps and scenarios"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::string{"railodd 0.1.0"});
+
+    std::vector<std::unique_ptr<cli::Command>> commands;
+    commands.push_back(std::make_unique<cli::ConvertCommand>());
+    commands.push_back(std::make_unique<cli::SampleCommand>());
+    std::vector<CLI::App*> subs;
+    for (auto& c : commands) {
+        subs.push_back(c->add(app));
+    }
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? exit_ok : exit_usage;
+    }
+
+    try {
+        for (std::size_t i = 0; i < commands.size(); ++i) {
+            if (subs[i]->parsed()) {
+                commands[i]->setup();
+                return commands[i]->run();
+            }
+        }
+    } catch (const UsageError& e) {
+        std::cerr << "railodd: error: " << e.what() << '\n';
+        return exit_usage;
+    } catch (const InputError& e) {
+        std::cerr << "railodd: input error: " << e.what() << '\n';
+        return exit_input;
+    } catch (const OutputError& e) {
+        std::cerr << "railodd: output error: " << e.what() << '\n';
+        return exit_output;
+    } catch (const std::exception& e) {
+        std::cerr << "railodd: internal error: " << e.what() << '\n';
+        return exit_internal;
+    }
+    return exit_usage;
+}

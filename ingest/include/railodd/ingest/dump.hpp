@@ -1,0 +1,17 @@
+#pragma once
+// What the ingest stage produced, as report.json sections and as GeoJSON.
+#include "railodd/ingest/types.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace railodd::ingest {
+
+// {"input": {...}, "output": {...}, "projection": {...}, "dropped": [...], "repairs": [...]}
+nlohmann::ordered_json report_sections(const IngestResult& result);
+
+// Tracks, roads and features in WGS84, one GeoJSON Feature each with its OSM id and tags.
+std::string to_geojson(const IngestResult& result);
+
+} // namespace railodd::ingest

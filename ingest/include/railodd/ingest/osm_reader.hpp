@@ -1,0 +1,22 @@
+#pragma once
+// Reads railway tracks, railway point features, platforms, stations and the
+// roads in a corridor around the tracks from an OSM file (.osm, .osm.pbf,
+// .osm.bz2, .osm.gz, .opl), streaming it in passes so that only the nodes of
+// selected objects are ever held in memory.
+#include "railodd/ingest/selection.hpp"
+#include "railodd/ingest/types.hpp"
+
+#include <filesystem>
+
+namespace railodd::ingest {
+
+struct IngestOptions {
+    Selection selection;
+    double road_corridor_m = 300.0;   // roads with a node this close to a track are read; 0: no roads
+    double feature_distance_m = 50.0; // point features and platforms farther from every track are dropped
+    double station_distance_m = 500.0; // station/halt nodes are often mapped at the building
+};
+
+IngestResult read_osm(const std::filesystem::path& file, const IngestOptions& options);
+
+} // namespace railodd::ingest

@@ -1,0 +1,59 @@
+#pragma once
+// The individual streaming passes of the OSM reader. Each reads one kind of
+// object and keeps only what the selection needs.
+#include "node_locations.hpp"
+#include "railodd/ingest/types.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace railodd::ingest {
+
+struct RawWay {
+    std::int64_t id = 0;
+    Tags tags;
+    std::vector<std::int64_t> refs;
+};
+
+struct RawFeature {
+    std::string osm_type;
+    std::int64_t id = 0;
+    std::string kind;
+    Tags tags;
+    LonLat lonlat;                   // nodes
+    std::vector<std::int64_t> refs;  // ways
+};
+
+// Way ids of a rail route relation and of the relations it contains (route
+// masters, super-routes), sorted. Throws InputError if it is absent or no rail route.
+std::vector<std::int64_t> relation_way_members(const std::filesystem::path& file, std::int64_t relation);
+
+struct WayScan {
+    std::vector<RawWay> tracks;
+    std::vector<RawFeature> area_features; // platforms and station areas
+};
+
+// Track ways (only `members` if non-null) and platform / station ways.
+WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members);
+
+struct NodeScan {
+    std::size_t node_count = 0;
+    std::vector<RawFeature> point_features;
+};
+
+// Locates every wanted node and collects railway point feature nodes.
+NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted);
+
+// Locates the wanted nodes only.
+void locate_nodes(const std::filesystem::path& file, NodeLocations& wanted, const std::string& pass);
+
+// Every node for which `keep` holds, located.
+NodeLocations collect_nodes(const std::filesystem::path& file, const std::function<bool(LonLat)>& keep);
+
+// Road ways with at least one node in `corridor`.
+std::vector<RawWay> scan_road_ways(const std::filesystem::path& file, const NodeLocations& corridor);
+
+} // namespace railodd::ingest

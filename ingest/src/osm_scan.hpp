@@ -1,0 +1,37 @@
+#pragma once
+// One streaming pass over an OSM file for the given entity types. libosmium
+// decodes PBF blocks on its thread pool and still delivers objects in file
+// order, so every pass is deterministic whatever the thread count.
+#include "railodd/util/errors.hpp"
+
+#include <osmium/io/any_input.hpp>
+#include <osmium/osm.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace railodd::ingest {
+
+// Turns libosmium's exceptions (pbf_error, xml_error, gzip_error, ...) into an
+// InputError naming the file.
+[[noreturn]] void rethrow_as_input_error(const std::filesystem::path& file, const std::string& pass);
+
+template <typename Visitor>
+void scan_osm(const std::filesystem::path& file, osmium::osm_entity_bits::type types, const std::string& pass,
+              Visitor&& visit) {
+    try {
+        osmium::io::Reader reader{osmium::io::File{file.string()}, types, osmium::io::read_meta::no};
+        while (osmium::memory::Buffer buffer = reader.read()) {
+            for (auto& object : buffer.select<osmium::OSMObject>()) {
+                visit(object);
+            }
+        }
+        reader.close();
+    } catch (const railodd::Error&) {
+        throw;
+    } catch (...) {
+        rethrow_as_input_error(file, pass);
+    }
+}
+
+} // namespace railodd::ingest

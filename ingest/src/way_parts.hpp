@@ -1,0 +1,23 @@
+#pragma once
+// Turns a way's node references into located parts, cutting it where nodes are
+// missing from a clipped extract and recording each repair explicitly.
+#include "node_locations.hpp"
+#include "osm_passes.hpp"
+#include "railodd/ingest/types.hpp"
+
+#include <functional>
+#include <string>
+
+namespace railodd::ingest {
+
+using Locator = std::function<const NodeLocations::Entry*(std::int64_t)>;
+
+struct BuiltWay {
+    Way way;
+    std::string drop_reason;        // non-empty: the way has no part of two or more nodes
+    std::vector<std::string> repairs; // what was done to the input to use it
+};
+
+BuiltWay build_way(RawWay raw, const Locator& locate);
+
+} // namespace railodd::ingest

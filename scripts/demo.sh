@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The README's main job: install, build, write the embedded sample route and
+# convert it. Outputs land in out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+./build/railodd sample -o out/sample
+./build/railodd convert out/sample/sample_route.osm -o out/sample_route
+echo
+echo "outputs:"
+echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
+echo "  conversion (report.json, ingest.geojson): $(pwd)/out/sample_route/"

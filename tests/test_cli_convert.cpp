@@ -1,0 +1,124 @@
+// `railodd convert` as a user runs it: outputs, exit codes, messages naming the
+// file, no half-written output, byte-identical reruns.
+#include "test_support.hpp"
+
+#include <nlohmann/json.hpp>
+
+using namespace railodd::test;
+
+namespace {
+
+const char* const small_opl = R"(n1 v1 x10.0000 y48.0000
+n2 v1 x10.0010 y48.0000 Trailway=level_crossing
+n3 v1 x10.0020 y48.0001
+n4 v1 x10.0010 y48.0010
+n5 v1 x10.0010 y47.9990
+w1 v1 Trailway=rail,maxspeed=100 Nn1,n2,n3
+w2 v1 Trailway=rail Nn3,n9
+w3 v1 Thighway=tertiary Nn4,n2,n5
+)";
+
+CommandResult railodd(const std::string& args) { return run_command(std::string{RAILODD_BIN} + " " + args); }
+
+bool has_staging_leftovers(const fs::path& dir) {
+    if (!fs::exists(dir)) {
+        return false;
+    }
+    for (const auto& e : fs::directory_iterator(dir)) {
+        if (e.path().filename().string().rfind(".railodd-staging", 0) == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+TEST(CliConvert, HelpListsSubcommands) {
+    const auto r = railodd("--help");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("convert"), std::string::npos);
+    EXPECT_NE(r.output.find("sample"), std::string::npos);
+}
+
+TEST(CliConvert, WritesReportWithAccounting) {
+    const auto dir = scratch_dir();
+    const auto in = write_file(dir / "in.opl", small_opl);
+    const auto out = dir / "out";
+    const auto r = railodd("convert " + quoted(in) + " -o " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto report = nlohmann::json::parse(read_file(out / "report.json"));
+    EXPECT_EQ(report["input"]["track_ways"], 2);
+    EXPECT_EQ(report["output"]["track_ways"], 1);
+    EXPECT_EQ(report["input"]["road_ways"], 1);
+    ASSERT_EQ(report["dropped"].size(), 1u);
+    EXPECT_EQ(report["dropped"][0]["kind"], "track");
+    EXPECT_EQ(report["dropped"][0]["osm_type"], "way");
+    EXPECT_EQ(report["dropped"][0]["osm_id"], 2);
+    EXPECT_FALSE(report["dropped"][0]["reason"].get<std::string>().empty());
+    EXPECT_TRUE(report["timings_s"].contains("read_ways"));
+    EXPECT_EQ(report["output"]["features_by_kind"]["level_crossing"], 1);
+    const auto geo = nlohmann::json::parse(read_file(out / "ingest.geojson"));
+    EXPECT_EQ(geo["type"], "FeatureCollection");
+    EXPECT_EQ(geo["features"].size(), 3u); // track, road, level crossing
+    EXPECT_FALSE(has_staging_leftovers(out));
+}
+
+TEST(CliConvert, MissingInputFailsNamingTheFileAndWritesNothing) {
+    const auto dir = scratch_dir();
+    const auto out = dir / "out";
+    const auto r = railodd("convert " + quoted(dir / "nope.osm.pbf") + " -o " + quoted(out));
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find((dir / "nope.osm.pbf").string() + ": no such file"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out / "report.json"));
+    EXPECT_FALSE(fs::exists(out / "map.xodr"));
+    EXPECT_FALSE(has_staging_leftovers(out));
+}
+
+TEST(CliConvert, CorruptInputFailsCleanly) {
+    const auto dir = scratch_dir();
+    const auto in = write_file(dir / "bad.osm", "<osm version=\"0.6\"><way id=\"1\"><nd ref=");
+    const auto out = dir / "out";
+    const auto r = railodd("convert " + quoted(in) + " -o " + quoted(out));
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find(in.string()), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out / "report.json"));
+    EXPECT_FALSE(has_staging_leftovers(out));
+}
+
+TEST(CliConvert, BadOptionsAreUsageErrors) {
+    const auto dir = scratch_dir();
+    const auto in = write_file(dir / "in.opl", small_opl);
+    const auto r1 = railodd("convert " + quoted(in) + " -o " + quoted(dir / "o1") + " --bbox 10,48,9,49");
+    EXPECT_EQ(r1.exit_code, 1);
+    EXPECT_NE(r1.output.find("--bbox"), std::string::npos) << r1.output;
+    EXPECT_FALSE(fs::exists(dir / "o1"));
+    const auto r2 = railodd("convert " + quoted(in) + " -o " + quoted(dir / "o2") + " --road-corridor -5");
+    EXPECT_EQ(r2.exit_code, 1);
+    const auto r3 = railodd("convert " + quoted(dir / "t.geojson") + " -o " + quoted(dir / "o3"));
+    EXPECT_EQ(r3.exit_code, 1);
+    EXPECT_NE(r3.output.find("--field-mapping"), std::string::npos) << r3.output;
+    const auto r4 = railodd("convert " + quoted(in) + " -o " + quoted(dir / "o4") + " --relation 5");
+    EXPECT_EQ(r4.exit_code, 2);
+    EXPECT_NE(r4.output.find("relation 5 is not in the file"), std::string::npos) << r4.output;
+}
+
+TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
+    const auto dir = scratch_dir();
+    fs::path in = write_file(dir / "in.opl", small_opl);
+    if (!shared_data().empty()) {
+        in = shared_data() / "osm" / "gh_harsdorf.osm.pbf"; // multithreaded PBF decoding
+    }
+    for (const char* threads : {"1", "2", "4"}) {
+        const auto r = railodd("convert " + quoted(in) + " -o " + quoted(dir / threads) +
+                               " --no-timings --threads " + threads);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    for (const char* name : {"report.json", "ingest.geojson"}) {
+        const std::string a = read_file(dir / "1" / name);
+        EXPECT_FALSE(a.empty());
+        EXPECT_EQ(a, read_file(dir / "2" / name)) << name;
+        EXPECT_EQ(a, read_file(dir / "4" / name)) << name;
+    }
+    EXPECT_EQ(nlohmann::json::parse(read_file(dir / "1" / "report.json")).count("timings_s"), 0u);
+}

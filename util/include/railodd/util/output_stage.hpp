@@ -1,0 +1,35 @@
+#pragma once
+// All outputs of one command are written into a hidden staging folder inside
+// the output directory and renamed into place only when the command succeeds,
+// so a failed run leaves no half-written file behind.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace railodd {
+
+class OutputStage {
+public:
+    explicit OutputStage(std::filesystem::path outdir);
+    OutputStage(const OutputStage&) = delete;
+    OutputStage& operator=(const OutputStage&) = delete;
+    ~OutputStage();
+
+    // Path inside the staging folder where the output `name` is to be written.
+    std::filesystem::path staged_path(std::string_view name);
+    void write_text(std::string_view name, std::string_view content);
+
+    // Renames every staged file into the output directory; the final paths.
+    std::vector<std::filesystem::path> commit();
+
+    const std::filesystem::path& outdir() const noexcept { return outdir_; }
+
+private:
+    std::filesystem::path outdir_;
+    std::filesystem::path staging_;
+    std::vector<std::string> names_;
+    bool committed_ = false;
+};
+
+} // namespace railodd

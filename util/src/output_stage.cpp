@@ -1,0 +1,70 @@
+#include "railodd/util/output_stage.hpp"
+
+#include "railodd/util/errors.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <system_error>
+#include <unistd.h>
+
+namespace railodd {
+
+namespace fs = std::filesystem;
+
+OutputStage::OutputStage(fs::path outdir) : outdir_(std::move(outdir)) {
+    std::error_code ec;
+    fs::create_directories(outdir_, ec);
+    if (ec) {
+        throw OutputError(outdir_.string(), "cannot create output directory: " + ec.message());
+    }
+    staging_ = outdir_ / (".railodd-staging-" + std::to_string(::getpid()));
+    fs::remove_all(staging_, ec);
+    fs::create_directory(staging_, ec);
+    if (ec) {
+        throw OutputError(staging_.string(), "cannot create staging directory: " + ec.message());
+    }
+}
+
+OutputStage::~OutputStage() {
+    std::error_code ec;
+    fs::remove_all(staging_, ec); // best effort: never throw from a destructor
+}
+
+fs::path OutputStage::staged_path(std::string_view name) {
+    std::string n{name};
+    if (std::find(names_.begin(), names_.end(), n) == names_.end()) {
+        names_.push_back(n);
+    }
+    return staging_ / n;
+}
+
+void OutputStage::write_text(std::string_view name, std::string_view content) {
+    const fs::path path = staged_path(name);
+    std::ofstream out(path, std::ios::binary);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.close();
+    if (!out) {
+        throw OutputError(path.string(), "write failed");
+    }
+}
+
+std::vector<fs::path> OutputStage::commit() {
+    std::vector<fs::path> written;
+    for (const auto& name : names_) {
+        const fs::path from = staging_ / name;
+        if (!fs::exists(from)) {
+            continue; // reserved but never written
+        }
+        const fs::path to = outdir_ / name;
+        std::error_code ec;
+        fs::rename(from, to, ec);
+        if (ec) {
+            throw OutputError(to.string(), "cannot move output into place: " + ec.message());
+        }
+        written.push_back(to);
+    }
+    committed_ = true;
+    return written;
+}
+
+} // namespace railodd
