@@ -74,8 +74,9 @@ ingest::Selection make_selection(const ConvertOptions& o) {
 nlohmann::ordered_json make_report(const ingest::IngestResult& r, bool timings) {
     nlohmann::ordered_json report;
     report["railodd"] = {{"version", "0.1.0"}, {"command", "convert"}};
-    for (auto& [key, value] : ingest::report_sections(r).items()) {
-        report[key] = value;
+    nlohmann::ordered_json sections = ingest::report_sections(r);
+    for (auto& [key, value] : sections.items()) {
+        report[key] = std::move(value);
     }
     if (timings) {
         nlohmann::ordered_json t = nlohmann::ordered_json::object();

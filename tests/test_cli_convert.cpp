@@ -18,7 +18,7 @@ w2 v1 Trailway=rail Nn3,n9
 w3 v1 Thighway=tertiary Nn4,n2,n5
 )";
 
-CommandResult railodd(const std::string& args) { return run_command(std::string{RAILODD_BIN} + " " + args); }
+CommandResult run_railodd(const std::string& args) { return run_command(std::string{RAILODD_BIN} + " " + args); }
 
 bool has_staging_leftovers(const fs::path& dir) {
     if (!fs::exists(dir)) {
@@ -35,7 +35,7 @@ bool has_staging_leftovers(const fs::path& dir) {
 } // namespace
 
 TEST(CliConvert, HelpListsSubcommands) {
-    const auto r = railodd("--help");
+    const auto r = run_railodd("--help");
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_NE(r.output.find("convert"), std::string::npos);
     EXPECT_NE(r.output.find("sample"), std::string::npos);
@@ -45,7 +45,7 @@ TEST(CliConvert, WritesReportWithAccounting) {
     const auto dir = scratch_dir();
     const auto in = write_file(dir / "in.opl", small_opl);
     const auto out = dir / "out";
-    const auto r = railodd("convert " + quoted(in) + " -o " + quoted(out));
+    const auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(out));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto report = nlohmann::json::parse(read_file(out / "report.json"));
     EXPECT_EQ(report["input"]["track_ways"], 2);
@@ -67,7 +67,7 @@ TEST(CliConvert, WritesReportWithAccounting) {
 TEST(CliConvert, MissingInputFailsNamingTheFileAndWritesNothing) {
     const auto dir = scratch_dir();
     const auto out = dir / "out";
-    const auto r = railodd("convert " + quoted(dir / "nope.osm.pbf") + " -o " + quoted(out));
+    const auto r = run_railodd("convert " + quoted(dir / "nope.osm.pbf") + " -o " + quoted(out));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.output.find((dir / "nope.osm.pbf").string() + ": no such file"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out / "report.json"));
@@ -79,7 +79,7 @@ TEST(CliConvert, CorruptInputFailsCleanly) {
     const auto dir = scratch_dir();
     const auto in = write_file(dir / "bad.osm", "<osm version=\"0.6\"><way id=\"1\"><nd ref=");
     const auto out = dir / "out";
-    const auto r = railodd("convert " + quoted(in) + " -o " + quoted(out));
+    const auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(out));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.output.find(in.string()), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out / "report.json"));
@@ -89,16 +89,16 @@ TEST(CliConvert, CorruptInputFailsCleanly) {
 TEST(CliConvert, BadOptionsAreUsageErrors) {
     const auto dir = scratch_dir();
     const auto in = write_file(dir / "in.opl", small_opl);
-    const auto r1 = railodd("convert " + quoted(in) + " -o " + quoted(dir / "o1") + " --bbox 10,48,9,49");
+    const auto r1 = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / "o1") + " --bbox 10,48,9,49");
     EXPECT_EQ(r1.exit_code, 1);
     EXPECT_NE(r1.output.find("--bbox"), std::string::npos) << r1.output;
     EXPECT_FALSE(fs::exists(dir / "o1"));
-    const auto r2 = railodd("convert " + quoted(in) + " -o " + quoted(dir / "o2") + " --road-corridor -5");
+    const auto r2 = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / "o2") + " --road-corridor -5");
     EXPECT_EQ(r2.exit_code, 1);
-    const auto r3 = railodd("convert " + quoted(dir / "t.geojson") + " -o " + quoted(dir / "o3"));
+    const auto r3 = run_railodd("convert " + quoted(dir / "t.geojson") + " -o " + quoted(dir / "o3"));
     EXPECT_EQ(r3.exit_code, 1);
     EXPECT_NE(r3.output.find("--field-mapping"), std::string::npos) << r3.output;
-    const auto r4 = railodd("convert " + quoted(in) + " -o " + quoted(dir / "o4") + " --relation 5");
+    const auto r4 = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / "o4") + " --relation 5");
     EXPECT_EQ(r4.exit_code, 2);
     EXPECT_NE(r4.output.find("relation 5 is not in the file"), std::string::npos) << r4.output;
 }
@@ -110,7 +110,7 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
         in = shared_data() / "osm" / "gh_harsdorf.osm.pbf"; // multithreaded PBF decoding
     }
     for (const char* threads : {"1", "2", "4"}) {
-        const auto r = railodd("convert " + quoted(in) + " -o " + quoted(dir / threads) +
+        const auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / threads) +
                                " --no-timings --threads " + threads);
         ASSERT_EQ(r.exit_code, 0) << r.output;
     }

@@ -158,6 +158,20 @@ TEST(IngestOsmReader, RoadsInCorridorAreReadWhole) {
     EXPECT_TRUE(read(route_opl, no_roads).roads.empty());
 }
 
+TEST(IngestOsmReader, CorridorPassesFindTheSameRoadsAsPrefetch) {
+    IngestOptions passes;
+    passes.road_prefetch_refs = 0; // as for a file with too many roads to hold
+    const IngestResult a = read(route_opl);
+    const IngestResult b = read(route_opl, passes);
+    ASSERT_EQ(a.roads.size(), b.roads.size());
+    for (std::size_t i = 0; i < a.roads.size(); ++i) {
+        EXPECT_EQ(a.roads[i].id, b.roads[i].id);
+        ASSERT_EQ(a.roads[i].parts.size(), b.roads[i].parts.size());
+        EXPECT_EQ(a.roads[i].parts[0].size(), b.roads[i].parts[0].size());
+    }
+    EXPECT_EQ(a.counts.input_road_ways, b.counts.input_road_ways);
+}
+
 TEST(IngestOsmReader, LocalFrameIsCentredOnTracks) {
     const IngestResult r = read(route_opl);
     EXPECT_NEAR(r.projection.origin().lon, 10.002, 1e-9);

@@ -96,6 +96,22 @@ TEST(IngestSharedExtracts, RealFeaturesAndRoadsAreFound) {
     EXPECT_LE(r.roads.size(), 130u) << "only roads in the corridor, of 130 in the file";
 }
 
+TEST(IngestSharedExtracts, CorridorPassesAgreeWithPrefetchOnRealRoads) {
+    RAILODD_REQUIRE_SHARED_DATA();
+    const auto file = shared_data() / "osm" / "valhalla_liechtenstein-latest.osm.pbf";
+    IngestOptions passes;
+    passes.road_prefetch_refs = 0;
+    const IngestResult a = read_osm(file, {});
+    const IngestResult b = read_osm(file, passes);
+    EXPECT_EQ(a.counts.input_road_ways, b.counts.input_road_ways);
+    ASSERT_EQ(a.roads.size(), b.roads.size());
+    for (std::size_t i = 0; i < a.roads.size(); ++i) {
+        EXPECT_EQ(a.roads[i].id, b.roads[i].id);
+        EXPECT_EQ(a.roads[i].parts.size(), b.roads[i].parts.size());
+    }
+    EXPECT_LT(a.roads.size(), 4660u / 2) << "a corridor, not the whole road network";
+}
+
 TEST(IngestSharedExtracts, TruncatedFilesFailCleanly) {
     RAILODD_REQUIRE_SHARED_DATA();
     const auto dir = scratch_dir();

@@ -50,11 +50,10 @@ std::string too_far(double limit) {
     return s.str();
 }
 
-// Decides and records one feature: `in_selection` says whether it belongs to the
-// input at all, `near` whether it is close enough to a track to be kept.
-void place(Feature f, bool in_selection, double distance, const FeatureContext& ctx, IngestResult& result) {
+// Decides and records one feature: `in_selection` says whether it lies in the
+// selection, `near` whether it is close enough to a track to be kept.
+void place(Feature f, bool in_selection, bool near, const FeatureContext& ctx, IngestResult& result) {
     const double limit = reach_for(f.kind, ctx.options);
-    const bool near = f.on_track || distance <= limit;
     // Features near a selected track are kept even just outside a bbox: the
     // selected ways are complete, and so is what stands on them.
     const bool counted = near || (ctx.selection.spatial() ? in_selection : !ctx.selection.relation);
@@ -77,9 +76,8 @@ void place_point(RawFeature& raw, const FeatureContext& ctx, IngestResult& resul
     f.tags = std::move(raw.tags);
     f.position = node_ref(raw.id, raw.lonlat, ctx.projection);
     f.on_track = std::binary_search(ctx.track_nodes.begin(), ctx.track_nodes.end(), raw.id);
-    const double limit = reach_for(f.kind, ctx.options);
-    const double d = f.on_track ? 0.0 : ctx.grid.distance(f.position.xy, limit);
-    place(std::move(f), ctx.selection.contains(raw.lonlat), d, ctx, result);
+    const bool near = f.on_track || ctx.grid.within(f.position.xy, reach_for(f.kind, ctx.options));
+    place(std::move(f), ctx.selection.contains(raw.lonlat), near, ctx, result);
 }
 
 void place_area(RawFeature& raw, const NodeLocations& locs, const FeatureContext& ctx, IngestResult& result) {
@@ -113,12 +111,10 @@ void place_area(RawFeature& raw, const NodeLocations& locs, const FeatureContext
     f.position.id = 0; // a derived point, not an OSM node
     f.position.xy = c;
     f.position.lonlat = ctx.projection.inverse(c);
-    double d = std::numeric_limits<double>::infinity();
     const double limit = reach_for(f.kind, ctx.options);
-    for (const auto& n : f.outline) {
-        d = std::min(d, ctx.grid.distance(n.xy, limit));
-    }
-    place(std::move(f), in_selection, d, ctx, result);
+    const bool near = std::any_of(f.outline.begin(), f.outline.end(),
+                                  [&](const NodeRef& n) { return ctx.grid.within(n.xy, limit); });
+    place(std::move(f), in_selection, near, ctx, result);
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "railodd/ingest/dump.hpp"
 
+#include "railodd/util/json_text.hpp"
+
 #include <map>
 
 namespace railodd::ingest {
@@ -22,42 +24,82 @@ ordered_json counts_by_kind(const std::vector<Feature>& features) {
     return j;
 }
 
-ordered_json coords(const std::vector<NodeRef>& nodes) {
-    ordered_json a = ordered_json::array();
-    for (const auto& n : nodes) {
-        a.push_back({n.lonlat.lon, n.lonlat.lat});
+void append_coords(std::string& out, const std::vector<NodeRef>& nodes) {
+    out += '[';
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        out += i ? ",[" : "[";
+        append_json_number(out, nodes[i].lonlat.lon);
+        out += ',';
+        append_json_number(out, nodes[i].lonlat.lat);
+        out += ']';
     }
-    return a;
+    out += ']';
 }
 
-ordered_json way_feature(const Way& way, const char* layer) {
-    ordered_json geom;
+void append_tags(std::string& out, const Tags& tags) {
+    out += '{';
+    const char* sep = "";
+    for (const auto& [k, v] : tags) {
+        out += sep;
+        append_json_string(out, k);
+        out += ':';
+        append_json_string(out, v);
+        sep = ",";
+    }
+    out += '}';
+}
+
+void append_way(std::string& out, const Way& way, const char* layer) {
+    out += "{\"type\":\"Feature\",\"geometry\":";
     if (way.parts.size() == 1) {
-        geom = {{"type", "LineString"}, {"coordinates", coords(way.parts.front())}};
+        out += "{\"type\":\"LineString\",\"coordinates\":";
+        append_coords(out, way.parts.front());
     } else {
-        ordered_json lines = ordered_json::array();
-        for (const auto& part : way.parts) {
-            lines.push_back(coords(part));
+        out += "{\"type\":\"MultiLineString\",\"coordinates\":[";
+        for (std::size_t i = 0; i < way.parts.size(); ++i) {
+            out += i ? "," : "";
+            append_coords(out, way.parts[i]);
         }
-        geom = {{"type", "MultiLineString"}, {"coordinates", lines}};
+        out += ']';
     }
-    ordered_json props = {{"layer", layer}, {"osm_type", origin_type(way.origin)}, {"osm_id", way.id},
-                          {"clipped", way.clipped()}, {"tags", way.tags}};
-    return {{"type", "Feature"}, {"geometry", geom}, {"properties", props}};
+    out += "},\"properties\":{\"layer\":\"";
+    out += layer;
+    out += "\",\"osm_type\":\"";
+    out += origin_type(way.origin);
+    out += "\",\"osm_id\":";
+    append_json_number(out, way.id);
+    out += way.clipped() ? ",\"clipped\":true" : ",\"clipped\":false";
+    out += ",\"tags\":";
+    append_tags(out, way.tags);
+    out += "}}";
 }
 
-ordered_json feature_feature(const Feature& f) {
-    ordered_json geom;
+void append_feature(std::string& out, const Feature& f) {
+    out += "{\"type\":\"Feature\",\"geometry\":";
     if (f.outline.empty()) {
-        geom = {{"type", "Point"}, {"coordinates", {f.position.lonlat.lon, f.position.lonlat.lat}}};
+        out += "{\"type\":\"Point\",\"coordinates\":[";
+        append_json_number(out, f.position.lonlat.lon);
+        out += ',';
+        append_json_number(out, f.position.lonlat.lat);
+        out += ']';
     } else if (f.area) {
-        geom = {{"type", "Polygon"}, {"coordinates", ordered_json::array({coords(f.outline)})}};
+        out += "{\"type\":\"Polygon\",\"coordinates\":[";
+        append_coords(out, f.outline);
+        out += ']';
     } else {
-        geom = {{"type", "LineString"}, {"coordinates", coords(f.outline)}};
+        out += "{\"type\":\"LineString\",\"coordinates\":";
+        append_coords(out, f.outline);
     }
-    ordered_json props = {{"layer", "feature"}, {"kind", f.kind},     {"osm_type", f.osm_type},
-                          {"osm_id", f.id},     {"on_track", f.on_track}, {"tags", f.tags}};
-    return {{"type", "Feature"}, {"geometry", geom}, {"properties", props}};
+    out += "},\"properties\":{\"layer\":\"feature\",\"kind\":";
+    append_json_string(out, f.kind);
+    out += ",\"osm_type\":";
+    append_json_string(out, f.osm_type);
+    out += ",\"osm_id\":";
+    append_json_number(out, f.id);
+    out += f.on_track ? ",\"on_track\":true" : ",\"on_track\":false";
+    out += ",\"tags\":";
+    append_tags(out, f.tags);
+    out += "}}";
 }
 
 } // namespace
@@ -98,18 +140,27 @@ ordered_json report_sections(const IngestResult& r) {
 }
 
 std::string to_geojson(const IngestResult& r) {
-    ordered_json features = ordered_json::array();
+    // One feature per line: diffable, and streamable by line-oriented tools.
+    std::string out = "{\"type\":\"FeatureCollection\",\"features\":[\n";
+    const char* sep = "";
+    auto next = [&] {
+        out += sep;
+        sep = ",\n";
+    };
     for (const auto& t : r.tracks) {
-        features.push_back(way_feature(t, "track"));
+        next();
+        append_way(out, t, "track");
     }
     for (const auto& w : r.roads) {
-        features.push_back(way_feature(w, "road"));
+        next();
+        append_way(out, w, "road");
     }
     for (const auto& f : r.features) {
-        features.push_back(feature_feature(f));
+        next();
+        append_feature(out, f);
     }
-    ordered_json fc = {{"type", "FeatureCollection"}, {"features", std::move(features)}};
-    return fc.dump(1) + "\n";
+    out += "\n]}\n";
+    return out;
 }
 
 } // namespace railodd::ingest

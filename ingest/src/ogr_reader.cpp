@@ -166,6 +166,56 @@ std::vector<std::vector<NodeRef>> line_parts(const OGRGeometry& geom, OGRCoordin
     return parts;
 }
 
+// One feature as a track way, or the reason it cannot be one.
+struct FeatureWay {
+    Way way;
+    std::string reason;
+};
+
+FeatureWay feature_way(OGRFeature& f, std::int64_t id, const FieldMapping& m, OGRCoordinateTransformation& ct,
+                       VertexIds& ids, const fs::path& file) {
+    FeatureWay fw;
+    Way& way = fw.way;
+    way.origin = Origin::ogr;
+    way.id = id;
+    way.tags = map_tags(f, m);
+    const OGRGeometry* geom = f.GetGeometryRef();
+    if (!geom || geom->IsEmpty()) {
+        fw.reason = "feature has no geometry";
+        return fw;
+    }
+    try {
+        way.parts = line_parts(*geom, ct, ids);
+    } catch (const std::exception& e) {
+        throw InputError(file.string(), "feature " + std::to_string(id) + ": " + e.what());
+    }
+    if (way.parts.empty()) {
+        fw.reason = std::string{"geometry "} + geom->getGeometryName() + " has no line of two or more vertices";
+    }
+    for (const auto& part : way.parts) {
+        way.node_count += part.size();
+    }
+    return fw;
+}
+
+bool in_selection(const Way& way, const Selection& sel) {
+    return !sel.spatial() || std::any_of(way.parts.begin(), way.parts.end(), [&](const auto& part) {
+               return std::any_of(part.begin(), part.end(), [&](const NodeRef& n) { return sel.contains(n.lonlat); });
+           });
+}
+
+std::size_t distinct_nodes(const std::vector<Way>& ways) {
+    std::set<std::int64_t> nodes;
+    for (const auto& t : ways) {
+        for (const auto& p : t.parts) {
+            for (const auto& n : p) {
+                nodes.insert(n.id);
+            }
+        }
+    }
+    return nodes.size();
+}
+
 } // namespace
 
 IngestResult read_vector(const fs::path& file, const fs::path& mapping_file, const Selection& sel) {
@@ -189,43 +239,20 @@ IngestResult read_vector(const fs::path& file, const fs::path& mapping_file, con
             throw InputError(file.string(), "feature id " + std::to_string(id) + " occurs twice" +
                                                 (m.id_field.empty() ? "" : " in field '" + m.id_field + "'"));
         }
-        Way way;
-        way.origin = Origin::ogr;
-        way.id = id;
-        way.tags = map_tags(*f, m);
-        const OGRGeometry* geom = f->GetGeometryRef();
-        std::string reason;
-        if (!geom || geom->IsEmpty()) {
-            reason = "feature has no geometry";
-        } else {
-            try {
-                way.parts = line_parts(*geom, *ct, ids);
-            } catch (const std::exception& e) {
-                throw InputError(file.string(), "feature " + std::to_string(id) + ": " + e.what());
-            }
-            if (way.parts.empty()) {
-                reason = std::string{"geometry "} + geom->getGeometryName() + " has no line of two or more vertices";
-            }
-        }
-        const bool in_sel = !sel.spatial() || std::any_of(way.parts.begin(), way.parts.end(), [&](const auto& part) {
-            return std::any_of(part.begin(), part.end(), [&](const NodeRef& n) { return sel.contains(n.lonlat); });
-        });
-        if (!in_sel) {
+        FeatureWay fw = feature_way(*f, id, m, *ct, ids, file);
+        if (!in_selection(fw.way, sel)) {
             continue;
         }
         ++result.counts.input_track_ways;
-        const std::string railway = tag_or(way.tags, "railway");
-        if (reason.empty() && !is_track_value(railway.c_str())) {
-            reason = "mapped railway=" + (railway.empty() ? std::string{"(none)"} : railway) + " is not a track value";
+        const std::string railway = tag_or(fw.way.tags, "railway");
+        if (fw.reason.empty() && !is_track_value(railway.c_str())) {
+            fw.reason = "mapped railway=" + (railway.empty() ? std::string{"(none)"} : railway) + " is not a track value";
         }
-        if (!reason.empty()) {
-            result.dropped.push_back({"track", "ogr_feature", id, reason});
+        if (!fw.reason.empty()) {
+            result.dropped.push_back({"track", "ogr_feature", id, fw.reason});
             continue;
         }
-        for (const auto& part : way.parts) {
-            way.node_count += part.size();
-        }
-        result.tracks.push_back(std::move(way));
+        result.tracks.push_back(std::move(fw.way));
     }
     if (result.tracks.empty()) {
         throw InputError(file.string(), "no track in the selection (" + result.selection + "); " +
@@ -233,16 +260,8 @@ IngestResult read_vector(const fs::path& file, const fs::path& mapping_file, con
     }
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);
-    std::set<std::int64_t> nodes;
-    for (const auto& t : result.tracks) {
-        for (const auto& p : t.parts) {
-            for (const auto& n : p) {
-                nodes.insert(n.id);
-            }
-        }
-    }
-    result.counts.input_track_nodes = nodes.size();
-    result.counts.input_nodes = nodes.size();
+    result.counts.input_track_nodes = distinct_nodes(result.tracks);
+    result.counts.input_nodes = result.counts.input_track_nodes;
     timer.stop();
     finalize(result);
     result.timings = timer.seconds();

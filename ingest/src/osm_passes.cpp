@@ -103,8 +103,11 @@ std::vector<std::int64_t> relation_way_members(const std::filesystem::path& file
     return ways;
 }
 
-WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members) {
+WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members,
+                        std::size_t road_refs_cap) {
     WayScan scan;
+    scan.roads_complete = road_refs_cap > 0;
+    std::size_t road_refs = 0;
     scan_osm(file, bits::way, "reading ways", [&](const osmium::OSMObject& obj) {
         const auto& way = static_cast<const osmium::Way&>(obj);
         if (is_track(way.tags())) {
@@ -119,6 +122,15 @@ WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std
             f.tags = to_tags(way.tags());
             f.refs = refs_of(way);
             scan.area_features.push_back(std::move(f));
+        }
+        if (scan.roads_complete && is_road(way.tags())) {
+            road_refs += way.nodes().size();
+            if (road_refs > road_refs_cap) {
+                scan.roads_complete = false; // too many: the corridor passes read them instead
+                std::vector<RawWay>().swap(scan.roads);
+            } else {
+                scan.roads.push_back({way.id(), to_tags(way.tags()), refs_of(way)});
+            }
         }
     });
     return scan;

@@ -34,10 +34,15 @@ std::vector<std::int64_t> relation_way_members(const std::filesystem::path& file
 struct WayScan {
     std::vector<RawWay> tracks;
     std::vector<RawFeature> area_features; // platforms and station areas
+    std::vector<RawWay> roads;             // every road way of the file, if roads_complete
+    bool roads_complete = false;
 };
 
-// Track ways (only `members` if non-null) and platform / station ways.
-WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members);
+// Track ways (only `members` if non-null) and platform / station ways. Road
+// ways are kept too while all of them together reference at most
+// `road_refs_cap` nodes, which saves three passes on all but very large files.
+WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members,
+                        std::size_t road_refs_cap);
 
 struct NodeScan {
     std::size_t node_count = 0;

@@ -3,6 +3,7 @@
 #include "feature_selection.hpp"
 #include "local_frame.hpp"
 #include "osm_passes.hpp"
+#include "road_selection.hpp"
 #include "segment_grid.hpp"
 #include "way_parts.hpp"
 
@@ -19,10 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Locator locator_of(const NodeLocations& locs) {
-    return [&locs](std::int64_t id) { return locs.located(id); };
-}
-
 bool any_node_selected(const Way& way, const Selection& sel) {
     for (const auto& part : way.parts) {
         for (const auto& n : part) {
@@ -32,12 +29,6 @@ bool any_node_selected(const Way& way, const Selection& sel) {
         }
     }
     return false;
-}
-
-void add_repairs(IngestResult& result, const char* kind, std::int64_t id, const std::vector<std::string>& actions) {
-    for (const auto& a : actions) {
-        result.repairs.push_back({kind, "way", id, a});
-    }
 }
 
 // Spatial selection and node accounting of the track ways read.
@@ -56,7 +47,7 @@ void select_tracks(std::vector<RawWay>& raw, const NodeLocations& locs, const Se
             result.dropped.push_back({"track", "way", built.way.id, built.drop_reason});
             continue;
         }
-        add_repairs(result, "track", built.way.id, built.repairs);
+        add_repairs(result, "track", built);
         result.tracks.push_back(std::move(built.way));
     }
 }
@@ -74,45 +65,6 @@ SegmentGrid track_grid(const std::vector<Way>& tracks, double cell) {
         }
     }
     return grid;
-}
-
-void read_roads(const fs::path& file, const IngestOptions& options, const SegmentGrid& grid, IngestResult& result) {
-    const double corridor = options.road_corridor_m;
-    const BBox near = lonlat_bounds(result.tracks, corridor);
-    const LocalProjection& proj = result.projection;
-    NodeLocations in_corridor = collect_nodes(file, [&](LonLat ll) {
-        return near.contains(ll) && grid.distance(proj.forward(ll), corridor) <= corridor;
-    });
-    std::vector<RawWay> raw = scan_road_ways(file, in_corridor);
-
-    // Roads leave the corridor: their outer nodes are located in one more pass.
-    NodeLocations outer;
-    for (const auto& r : raw) {
-        for (std::int64_t ref : r.refs) {
-            if (!in_corridor.located(ref)) {
-                outer.want(ref);
-            }
-        }
-    }
-    outer.seal();
-    if (outer.size() > 0) {
-        locate_nodes(file, outer, "reading road nodes");
-    }
-    const Locator locate = [&](std::int64_t id) {
-        const auto* e = in_corridor.located(id);
-        return e ? e : outer.located(id);
-    };
-    for (auto& r : raw) {
-        ++result.counts.input_road_ways;
-        BuiltWay built = build_way(std::move(r), locate);
-        if (!built.drop_reason.empty()) {
-            result.dropped.push_back({"road", "way", built.way.id, built.drop_reason});
-            continue;
-        }
-        add_repairs(result, "road", built.way.id, built.repairs);
-        result.roads.push_back(std::move(built.way));
-    }
-    project_ways(result.roads, proj);
 }
 
 std::vector<std::int64_t> sorted_track_node_ids(const std::vector<Way>& tracks) {
@@ -151,13 +103,17 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
 
     // Phase 2: track, platform and station ways; only their node ids are known yet.
     timer.start("read_ways");
-    WayScan ways = scan_track_ways(file, sel.relation ? &members : nullptr);
+    const std::size_t road_refs_cap = options.road_corridor_m > 0 ? options.road_prefetch_refs : 0;
+    WayScan ways = scan_track_ways(file, sel.relation ? &members : nullptr, road_refs_cap);
     NodeLocations locs;
     for (const auto& w : ways.tracks) {
         locs.want_all(w.refs);
     }
     for (const auto& f : ways.area_features) {
         locs.want_all(f.refs);
+    }
+    for (const auto& r : ways.roads) {
+        locs.want_all(r.refs);
     }
     locs.seal();
 
@@ -177,8 +133,8 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);
     result.counts.input_track_nodes = sorted_track_node_ids(result.tracks).size();
-    const double reach = std::max({options.road_corridor_m, options.feature_distance_m, options.station_distance_m});
-    const SegmentGrid grid = track_grid(result.tracks, std::max(reach, 100.0));
+    // Cells small against the corridor: queries stop at the first segment in reach.
+    const SegmentGrid grid = track_grid(result.tracks, 50.0);
 
     // Phase 5: features on or near the selected tracks.
     timer.start("select_features");
@@ -188,7 +144,12 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     // Phase 6: roads in the corridor around the tracks.
     if (options.road_corridor_m > 0) {
         timer.start("read_roads");
-        read_roads(file, options, grid, result);
+        RoadContext rc{file, options.road_corridor_m, grid, lonlat_bounds(result.tracks, options.road_corridor_m)};
+        if (ways.roads_complete) {
+            select_prefetched_roads(std::move(ways.roads), locs, rc, result);
+        } else {
+            read_corridor_roads(rc, result);
+        }
     }
     timer.stop();
     finalize(result);

@@ -27,35 +27,69 @@ std::int64_t SegmentGrid::cell(double v) const noexcept {
 
 void SegmentGrid::add_polyline(const std::vector<XY>& points) {
     for (std::size_t i = 1; i < points.size(); ++i) {
-        const XY a = points[i - 1];
-        const XY b = points[i];
-        const auto index = static_cast<std::uint32_t>(segments_.size());
-        segments_.push_back({a, b});
-        // Every cell the segment's bounding box touches: cheap and conservative.
-        for (std::int64_t cx = cell(std::min(a.x, b.x)); cx <= cell(std::max(a.x, b.x)); ++cx) {
-            for (std::int64_t cy = cell(std::min(a.y, b.y)); cy <= cell(std::max(a.y, b.y)); ++cy) {
-                cells_[key(cx, cy)].push_back(index);
-            }
-        }
+        segments_.push_back({points[i - 1], points[i]});
+        register_cells(static_cast<std::uint32_t>(segments_.size() - 1));
     }
 }
 
-double SegmentGrid::distance(XY p, double max_distance) const {
-    double best = std::numeric_limits<double>::infinity();
-    const std::int64_t x0 = cell(p.x - max_distance), x1 = cell(p.x + max_distance);
-    const std::int64_t y0 = cell(p.y - max_distance), y1 = cell(p.y + max_distance);
-    for (std::int64_t cx = x0; cx <= x1; ++cx) {
-        for (std::int64_t cy = y0; cy <= y1; ++cy) {
-            const auto it = cells_.find(key(cx, cy));
-            if (it == cells_.end()) {
-                continue;
-            }
-            for (std::uint32_t i : it->second) {
-                best = std::min(best, point_segment_distance(p, segments_[i].a, segments_[i].b));
+// Exact grid traversal (Amanatides & Woo): only the cells the segment passes
+// through, so a long diagonal straight does not fill its whole bounding box.
+void SegmentGrid::register_cells(std::uint32_t index) {
+    const XY a = segments_[index].a;
+    const XY b = segments_[index].b;
+    std::int64_t cx = cell(a.x), cy = cell(a.y);
+    const std::int64_t ex = cell(b.x), ey = cell(b.y);
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double delta_x = dx != 0 ? cell_ / std::abs(dx) : inf;
+    const double delta_y = dy != 0 ? cell_ / std::abs(dy) : inf;
+    const double next_x = (static_cast<double>(cx + (step_x > 0 ? 1 : 0)) * cell_ - a.x);
+    const double next_y = (static_cast<double>(cy + (step_y > 0 ? 1 : 0)) * cell_ - a.y);
+    double t_x = dx != 0 ? next_x / dx : inf;
+    double t_y = dy != 0 ? next_y / dy : inf;
+    cells_[key(cx, cy)].push_back(index);
+    const std::int64_t steps = std::abs(ex - cx) + std::abs(ey - cy);
+    for (std::int64_t i = 0; i < steps; ++i) {
+        if (t_x < t_y) {
+            cx += step_x;
+            t_x += delta_x;
+        } else {
+            cy += step_y;
+            t_y += delta_y;
+        }
+        cells_[key(cx, cy)].push_back(index);
+    }
+}
+
+bool SegmentGrid::cell_within(std::int64_t cx, std::int64_t cy, XY p, double max_distance) const {
+    const auto it = cells_.find(key(cx, cy));
+    if (it == cells_.end()) {
+        return false;
+    }
+    for (std::uint32_t i : it->second) {
+        if (point_segment_distance(p, segments_[i].a, segments_[i].b) <= max_distance) {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool SegmentGrid::within(XY p, double max_distance) const {
+    const std::int64_t px = cell(p.x), py = cell(p.y);
+    const auto reach = static_cast<std::int64_t>(std::ceil(max_distance / cell_));
+    // Square rings of cells around p's cell, nearest ring first.
+    for (std::int64_t r = 0; r <= reach; ++r) {
+        for (std::int64_t cx = px - r; cx <= px + r; ++cx) {
+            const bool edge_column = (cx == px - r || cx == px + r);
+            for (std::int64_t cy = py - r; cy <= py + r; cy += (edge_column || r == 0) ? 1 : 2 * r) {
+                if (cell_within(cx, cy, p, max_distance)) {
+                    return true;
+                }
             }
         }
     }
-    return best;
+    return false;
 }
 
 } // namespace railodd::ingest

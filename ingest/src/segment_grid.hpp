@@ -15,18 +15,18 @@ public:
 
     void add_polyline(const std::vector<XY>& points);
 
-    // Distance from p to the nearest segment if it is at most max_distance, else a
-    // value greater than max_distance.
-    double distance(XY p, double max_distance) const;
-
-    bool empty() const noexcept { return segments_.empty(); }
+    // True if some segment passes within max_distance of p. Cells are visited
+    // nearest first so points on or beside a track answer after a few tests.
+    bool within(XY p, double max_distance) const;
 
 private:
     struct Segment {
         XY a, b;
     };
-    std::int64_t key(std::int64_t cx, std::int64_t cy) const noexcept { return (cx << 32) ^ (cy & 0xffffffff); }
+    static std::int64_t key(std::int64_t cx, std::int64_t cy) noexcept { return (cx << 32) ^ (cy & 0xffffffff); }
     std::int64_t cell(double v) const noexcept;
+    void register_cells(std::uint32_t index);
+    bool cell_within(std::int64_t cx, std::int64_t cy, XY p, double max_distance) const;
 
     double cell_;
     std::vector<Segment> segments_;

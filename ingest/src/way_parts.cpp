@@ -49,7 +49,9 @@ BuiltWay build_way(RawWay raw, const Locator& locate) {
     close_part();
     way.tags = std::move(raw.tags);
 
-    if (way.parts.empty()) {
+    if (way.parts.empty() && raw.refs.size() < 2) {
+        built.drop_reason = "way has only " + std::to_string(raw.refs.size()) + " distinct node(s)";
+    } else if (way.parts.empty()) {
         built.drop_reason = way.missing_nodes == way.node_count
                                 ? "none of its " + std::to_string(way.node_count) + " nodes is in the input"
                                 : "fewer than two consecutive of its " + std::to_string(way.node_count) +
@@ -64,6 +66,12 @@ BuiltWay build_way(RawWay raw, const Locator& locate) {
         built.repairs.push_back(std::move(action));
     }
     return built;
+}
+
+void add_repairs(IngestResult& result, const char* kind, const BuiltWay& built) {
+    for (const auto& a : built.repairs) {
+        result.repairs.push_back({kind, "way", built.way.id, a});
+    }
 }
 
 } // namespace railodd::ingest

@@ -20,4 +20,11 @@ struct BuiltWay {
 
 BuiltWay build_way(RawWay raw, const Locator& locate);
 
+inline Locator locator_of(const NodeLocations& locs) {
+    return [&locs](std::int64_t id) { return locs.located(id); };
+}
+
+// Records a built way's repairs in the result under `kind` ("track", "road").
+void add_repairs(IngestResult& result, const char* kind, const BuiltWay& built);
+
 } // namespace railodd::ingest

@@ -15,6 +15,9 @@ struct IngestOptions {
     double road_corridor_m = 300.0;   // roads with a node this close to a track are read; 0: no roads
     double feature_distance_m = 50.0; // point features and platforms farther from every track are dropped
     double station_distance_m = 500.0; // station/halt nodes are often mapped at the building
+    // Road ways are read in the tracks' pass while the file's roads reference at
+    // most this many nodes (about 16 bytes each); beyond, in three corridor passes.
+    std::size_t road_prefetch_refs = 4'000'000;
 };
 
 IngestResult read_osm(const std::filesystem::path& file, const IngestOptions& options);

@@ -1,0 +1,45 @@
+#pragma once
+// An alignment prepared for many queries: primitive start poses are chained
+// once and a coarse sample polyline seeds nearest-point searches, so residual
+// measurement over thousands of points stays linear in their number.
+#include "railodd/geometry/alignment.hpp"
+
+#include <vector>
+
+namespace railodd::geometry {
+
+class IndexedAlignment {
+public:
+    // sample_step (m) must be small against the tightest radius and the
+    // distance of the queried points, or a search may settle in the wrong
+    // basin; 2 m is ample for railway geometry.
+    explicit IndexedAlignment(Alignment alignment, double sample_step = 2.0);
+
+    const Alignment& alignment() const noexcept { return alignment_; }
+    double length() const noexcept { return length_; }
+
+    // Same contract as evaluate(const Alignment&, double).
+    Pose evaluate(double s) const;
+
+    // Nearest point: the closest coarse sample picks the basin, then a
+    // safeguarded Newton iteration on the tangential residual finds s.
+    Projection project(double x, double y) const;
+
+private:
+    struct Sample {
+        double s;
+        double x;
+        double y;
+    };
+
+    std::size_t primitive_at(double s) const;
+    double refine(double x, double y, double lo, double hi, double guess) const;
+
+    Alignment alignment_;
+    std::vector<Pose> starts_;
+    std::vector<double> s_starts_;
+    double length_ = 0.0;
+    std::vector<Sample> samples_;
+};
+
+} // namespace railodd::geometry

@@ -1,0 +1,130 @@
+// Cached evaluation and nearest-point search on one alignment.
+#include "railodd/geometry/indexed_alignment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace railodd::geometry {
+
+namespace {
+
+struct Residual {
+    double along;   // (Q - P) . T: positive while the point lies ahead
+    double slope;   // d(along)/ds
+    double offset;  // (Q - P) . N, left positive
+    double distance;
+};
+
+Residual residual(const Pose& p, double x, double y) {
+    const double dx = x - p.x;
+    const double dy = y - p.y;
+    const double c = std::cos(p.hdg);
+    const double s = std::sin(p.hdg);
+    const double offset = -dx * s + dy * c;
+    return {dx * c + dy * s, -1.0 + p.curvature * offset, offset, std::hypot(dx, dy)};
+}
+
+} // namespace
+
+IndexedAlignment::IndexedAlignment(Alignment alignment, double sample_step)
+    : alignment_(std::move(alignment)) {
+    if (!(sample_step > 0.0) || !std::isfinite(sample_step)) {
+        throw std::invalid_argument("IndexedAlignment: sample step must be positive, got " +
+                                    std::to_string(sample_step));
+    }
+    validate(alignment_);
+    starts_ = primitive_starts(alignment_);
+    s_starts_ = primitive_s(alignment_);
+    length_ = geometry::length(alignment_);
+
+    for (std::size_t i = 0; i < starts_.size(); ++i) {
+        const Primitive& p = alignment_.primitives[i];
+        const auto n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(p.length / sample_step)));
+        for (std::size_t j = 0; j < n; ++j) {
+            const double ds = p.length * static_cast<double>(j) / static_cast<double>(n);
+            const Pose q = geometry::evaluate(starts_[i], p, ds);
+            samples_.push_back({s_starts_[i] + ds, q.x, q.y});
+        }
+    }
+    const Pose end = evaluate(length_);
+    samples_.push_back({length_, end.x, end.y});
+}
+
+std::size_t IndexedAlignment::primitive_at(double s) const {
+    // upper_bound hands a joint to the later primitive and skips zero-length ones.
+    const auto it = std::upper_bound(s_starts_.begin(), s_starts_.end(), s);
+    return it == s_starts_.begin() ? 0 : static_cast<std::size_t>(it - s_starts_.begin()) - 1;
+}
+
+Pose IndexedAlignment::evaluate(double s) const {
+    if (alignment_.primitives.empty()) {
+        Pose p = alignment_.start;
+        p.curvature = 0.0;
+        return p;
+    }
+    s = std::clamp(s, 0.0, length_);
+    const std::size_t i = primitive_at(s);
+    return geometry::evaluate(starts_[i], alignment_.primitives[i], s - s_starts_[i]);
+}
+
+double IndexedAlignment::refine(double x, double y, double lo, double hi, double guess) const {
+    const Residual r_lo = residual(evaluate(lo), x, y);
+    const Residual r_hi = residual(evaluate(hi), x, y);
+    if (r_lo.along <= 0.0 && r_hi.along >= 0.0) {
+        return r_lo.distance <= r_hi.distance ? lo : hi; // a local maximum lies between
+    }
+    if (r_lo.along <= 0.0) {
+        return lo;
+    }
+    if (r_hi.along >= 0.0) {
+        return hi;
+    }
+    // The bracket keeps along(lo) > 0 > along(hi); Newton steps that leave it
+    // (near a curvature jump, or far from the curve) fall back to bisection.
+    double s = guess;
+    for (int iter = 0; iter < 100; ++iter) {
+        const Residual r = residual(evaluate(s), x, y);
+        if (r.along == 0.0) {
+            return s;
+        }
+        (r.along > 0.0 ? lo : hi) = s;
+        double next = 0.5 * (lo + hi);
+        if (r.slope < 0.0) {
+            const double newton = s - r.along / r.slope;
+            if (newton > lo && newton < hi) {
+                next = newton;
+            }
+        }
+        const bool done = std::abs(next - s) < 1e-11 || hi - lo < 1e-11;
+        s = next;
+        if (done) {
+            break;
+        }
+    }
+    return s;
+}
+
+Projection IndexedAlignment::project(double x, double y) const {
+    std::size_t best = 0;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < samples_.size(); ++i) {
+        const double dx = samples_[i].x - x;
+        const double dy = samples_[i].y - y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 < best_d2) {
+            best_d2 = d2;
+            best = i;
+        }
+    }
+    const double lo = samples_[best == 0 ? 0 : best - 1].s;
+    const double hi = samples_[std::min(best + 1, samples_.size() - 1)].s;
+    const double s = refine(x, y, lo, hi, samples_[best].s);
+    const Residual r = residual(evaluate(s), x, y);
+    return {s, r.offset, r.distance};
+}
+
+} // namespace railodd::geometry
