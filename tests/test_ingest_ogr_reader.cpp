@@ -126,3 +126,25 @@ TEST(IngestOgrReader, RelationSelectionIsRefused) {
     EXPECT_THROW(read_vector(write_file(dir / "t.geojson", tracks_geojson), write_file(dir / "m.yaml", mapping_yaml), sel),
                  railodd::UsageError);
 }
+
+TEST(IngestOgrReader, GeoPackageAndShapefileReadLikeGeoJson) {
+    const auto dir = scratch_dir();
+    const auto src = write_file(dir / "tracks.geojson", tracks_geojson);
+    const auto map = write_file(dir / "mapping.yaml", mapping_yaml);
+    const auto reference = read_vector(src, map, {});
+    for (const char* name : {"tracks.gpkg", "tracks.shp"}) {
+        SCOPED_TRACE(name);
+        // ogr2ogr (gdal-bin) converts; GeoPackage and Shapefile keep the gid field.
+        const std::string cmd = "ogr2ogr '" + (dir / name).string() + "' '" + src.string() + "' 2>&1";
+        ASSERT_EQ(std::system(cmd.c_str()), 0);
+        const auto r = read_vector(dir / name, map, {});
+        ASSERT_EQ(r.tracks.size(), reference.tracks.size());
+        for (std::size_t i = 0; i < r.tracks.size(); ++i) {
+            EXPECT_EQ(r.tracks[i].id, reference.tracks[i].id);
+            EXPECT_EQ(r.tracks[i].tags, reference.tracks[i].tags);
+            ASSERT_EQ(r.tracks[i].parts.size(), reference.tracks[i].parts.size());
+            EXPECT_NEAR(r.tracks[i].parts[0][0].xy.x, reference.tracks[i].parts[0][0].xy.x, 1e-6);
+        }
+        EXPECT_EQ(r.dropped.size(), reference.dropped.size());
+    }
+}

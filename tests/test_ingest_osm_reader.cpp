@@ -292,3 +292,25 @@ TEST(IngestOsmReader, UnreadableInputsFailWithTheFileName) {
     const auto unknown = write_file(dir / "tracks.txt", "hello");
     EXPECT_THROW(read_osm(unknown, {}), railodd::InputError);
 }
+
+TEST(IngestOsmReader, EveryFormatGivesTheSameResult) {
+    const auto dir = scratch_dir();
+    const auto opl = write_file(dir / "route.opl", route_opl);
+    const IngestResult reference = read_osm(opl, {});
+    for (const char* name : {"route.osm", "route.osm.pbf", "route.osm.gz", "route.osm.bz2"}) {
+        SCOPED_TRACE(name);
+        // osmium-tool writes the other formats: an independent writer.
+        const std::string cmd = "osmium cat -o '" + (dir / name).string() + "' '" + opl.string() + "' 2>&1";
+        ASSERT_EQ(std::system(cmd.c_str()), 0);
+        const IngestResult r = read_osm(dir / name, {});
+        EXPECT_EQ(r.counts.input_track_ways, reference.counts.input_track_ways);
+        ASSERT_EQ(r.tracks.size(), reference.tracks.size());
+        for (std::size_t i = 0; i < r.tracks.size(); ++i) {
+            EXPECT_EQ(r.tracks[i].id, reference.tracks[i].id);
+            EXPECT_EQ(r.tracks[i].tags, reference.tracks[i].tags);
+            EXPECT_EQ(r.tracks[i].parts.size(), reference.tracks[i].parts.size());
+        }
+        EXPECT_EQ(r.features.size(), reference.features.size());
+        EXPECT_EQ(r.roads.size(), reference.roads.size());
+    }
+}
