@@ -1,10 +1,13 @@
 #include "convert_command.hpp"
 
+#include "railodd/geometry/dump.hpp"
+#include "railodd/geometry/track_fit.hpp"
 #include "railodd/ingest/dump.hpp"
 #include "railodd/ingest/ogr_reader.hpp"
 #include "railodd/ingest/osm_reader.hpp"
 #include "railodd/util/errors.hpp"
 #include "railodd/util/output_stage.hpp"
+#include "railodd/util/phase_timer.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -71,21 +74,22 @@ ingest::Selection make_selection(const ConvertOptions& o) {
     return sel;
 }
 
-nlohmann::ordered_json make_report(const ingest::IngestResult& r, bool timings) {
+nlohmann::ordered_json make_report(const ingest::IngestResult& r) {
     nlohmann::ordered_json report;
     report["railodd"] = {{"version", "0.1.0"}, {"command", "convert"}};
     nlohmann::ordered_json sections = ingest::report_sections(r);
     for (auto& [key, value] : sections.items()) {
         report[key] = std::move(value);
     }
-    if (timings) {
-        nlohmann::ordered_json t = nlohmann::ordered_json::object();
-        for (const auto& [phase, seconds] : r.timings) {
-            t[phase] = seconds;
-        }
-        report["timings_s"] = std::move(t);
-    }
     return report;
+}
+
+nlohmann::ordered_json timings_json(const std::vector<std::pair<std::string, double>>& timings) {
+    nlohmann::ordered_json t = nlohmann::ordered_json::object();
+    for (const auto& [phase, seconds] : timings) {
+        t[phase] = seconds;
+    }
+    return t;
 }
 
 void print_summary(const ingest::IngestResult& r, const std::vector<fs::path>& written) {
@@ -98,6 +102,34 @@ void print_summary(const ingest::IngestResult& r, const std::vector<fs::path>& w
     for (const auto& p : written) {
         std::cout << "  wrote " << p.string() << '\n';
     }
+}
+
+} // namespace
+
+namespace {
+
+struct Geometry {
+    geometry::TrackGraph tracks;
+    geometry::FittedNetwork fitted_tracks;
+    geometry::TrackGraph roads;
+    geometry::FittedNetwork fitted_roads;
+};
+
+// Roads are drawn less carefully than track and their curves are not
+// transition-designed: a looser noise scale keeps their fits simple.
+Geometry fit_geometry(const ingest::IngestResult& r, PhaseTimer& timer) {
+    Geometry g;
+    timer.start("track_graph");
+    g.tracks = geometry::build_track_graph(r.tracks, r.features);
+    timer.start("fit_tracks");
+    g.fitted_tracks = geometry::fit_track_graph(g.tracks, geometry::FitOptions{});
+    timer.start("fit_roads");
+    g.roads = geometry::build_track_graph(r.roads, {});
+    geometry::FitOptions road;
+    road.noise_sigma_m = 0.5;
+    g.fitted_roads = geometry::fit_track_graph(g.roads, road);
+    timer.stop();
+    return g;
 }
 
 } // namespace
@@ -117,10 +149,23 @@ int ConvertCommand::run() {
         result = ingest::read_osm(opt_.input, io);
     }
 
-    // Phase 2: stage every output, then move them into place together.
+    // Phase 2: track graph and railway-grade centrelines; road centrelines.
+    PhaseTimer timer;
+    const Geometry geo = fit_geometry(result, timer);
+    result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
+
+    // Phase 3: stage every output, then move them into place together.
     OutputStage stage(opt_.outdir);
     stage.write_text("ingest.geojson", ingest::to_geojson(result));
-    stage.write_text("report.json", make_report(result, !opt_.no_timings).dump(2) + "\n");
+    stage.write_text("geometry.geojson", geometry::to_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track"));
+    stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));
+    nlohmann::ordered_json report = make_report(result);
+    report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
+    report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
+    if (!opt_.no_timings) {
+        report["timings_s"] = timings_json(result.timings);
+    }
+    stage.write_text("report.json", report.dump(2) + "\n");
     print_summary(result, stage.commit());
     return exit_ok;
 }

@@ -108,10 +108,10 @@ double IndexedAlignment::refine(double x, double y, double lo, double hi, double
     return s;
 }
 
-Projection IndexedAlignment::project(double x, double y) const {
-    std::size_t best = 0;
+Projection IndexedAlignment::project_samples(double x, double y, std::size_t first, std::size_t last) const {
+    std::size_t best = first;
     double best_d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < samples_.size(); ++i) {
+    for (std::size_t i = first; i <= last; ++i) {
         const double dx = samples_[i].x - x;
         const double dy = samples_[i].y - y;
         const double d2 = dx * dx + dy * dy;
@@ -125,6 +125,19 @@ Projection IndexedAlignment::project(double x, double y) const {
     const double s = refine(x, y, lo, hi, samples_[best].s);
     const Residual r = residual(evaluate(s), x, y);
     return {s, r.offset, r.distance};
+}
+
+Projection IndexedAlignment::project(double x, double y) const {
+    return project_samples(x, y, 0, samples_.size() - 1);
+}
+
+Projection IndexedAlignment::project_within(double x, double y, double s_lo, double s_hi) const {
+    auto by_s = [](const Sample& a, double v) { return a.s < v; };
+    const auto lo = std::lower_bound(samples_.begin(), samples_.end(), s_lo, by_s);
+    const auto hi = std::lower_bound(samples_.begin(), samples_.end(), s_hi, by_s);
+    const std::size_t first = lo == samples_.begin() ? 0 : static_cast<std::size_t>(lo - samples_.begin()) - 1;
+    const std::size_t last = std::min(samples_.size() - 1, static_cast<std::size_t>(hi - samples_.begin()));
+    return project_samples(x, y, first, last);
 }
 
 } // namespace railodd::geometry

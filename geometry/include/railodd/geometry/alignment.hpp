@@ -76,3 +76,13 @@ struct Projection {
 Projection project_point(const Alignment& alignment, double x, double y);
 
 } // namespace railodd::geometry
+
+namespace railodd::geometry {
+
+// The alignment cut at the given arc lengths (ascending, within the
+// alignment): cuts.size() + 1 pieces, each starting with the exact pose at its
+// cut. Cutting a line, arc or clothoid is exact, so the pieces chain into the
+// original with no gap.
+std::vector<Alignment> split_alignment(const Alignment& alignment, const std::vector<double>& cuts);
+
+} // namespace railodd::geometry

@@ -25,6 +25,10 @@ public:
     // safeguarded Newton iteration on the tangential residual finds s.
     Projection project(double x, double y) const;
 
+    // Nearest point with arc length in [s_lo, s_hi]: for points known to lie
+    // near a stretch (ordered points along a track), far cheaper than project().
+    Projection project_within(double x, double y, double s_lo, double s_hi) const;
+
 private:
     struct Sample {
         double s;
@@ -34,6 +38,7 @@ private:
 
     std::size_t primitive_at(double s) const;
     double refine(double x, double y, double lo, double hi, double guess) const;
+    Projection project_samples(double x, double y, std::size_t first, std::size_t last) const;
 
     Alignment alignment_;
     std::vector<Pose> starts_;

@@ -1,0 +1,19 @@
+#pragma once
+// What the geometry stage produced: report.json's "geometry" section (per
+// track residuals, primitive counts, link continuity) and a GeoJSON of the
+// fitted centrelines sampled back to WGS84.
+#include "railodd/geometry/track_fit.hpp"
+#include "railodd/ingest/projection.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace railodd::geometry {
+
+nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net);
+
+std::string to_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
+                       const char* layer);
+
+} // namespace railodd::geometry

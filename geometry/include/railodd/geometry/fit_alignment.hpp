@@ -1,0 +1,52 @@
+#pragma once
+// Fits a railway-grade centreline to a mapped polyline: a sequence of lines,
+// clothoids and arcs with position, heading and curvature continuous (G2),
+// optionally starting and ending at given poses (links to other tracks).
+#include "railodd/geometry/alignment.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace railodd::geometry {
+
+struct Point {
+    double x = 0.0;
+    double y = 0.0;
+};
+
+struct FitOptions {
+    double noise_sigma_m = 0.3;   // expected scatter of mapped nodes about the true centreline
+    double knot_spacing_m = 12.0; // of the fine clothoid spline that estimates the curvature diagram
+    double window_m = 2500.0;     // long tracks are fitted window by window, each starting where the last ended
+    double curvature_sigma = 2e-5; // 1/m: noise scale of the estimated curvature diagram
+    double kink_sigma = 5e-4;      // 1/m: allowed change of curvature slope between knots of the fine spline
+    double ridge_sigma = 2e-3;     // 1/m: weak pull of the fine spline towards zero curvature
+};
+
+struct FitQuality {
+    std::size_t points = 0;
+    double rms_m = 0.0; // distance of the mapped nodes to the fitted line
+    double p95_m = 0.0;
+    double max_m = 0.0;
+    std::size_t windows = 0;
+    std::size_t fallback_windows = 0; // windows kept as the fine clothoid spline (no simpler fit was as good)
+};
+
+struct FitResult {
+    Alignment alignment;
+    FitQuality quality;
+};
+
+// points: the mapped nodes in order (at least 2). start/end: poses (x, y, hdg,
+// curvature) the alignment must begin / end with.
+FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
+                        const std::optional<Pose>& end, const FitOptions& options);
+
+// Distance of every point to the alignment.
+std::vector<double> distances(const Alignment& alignment, const std::vector<Point>& points);
+
+// Distances of points to an alignment, summarised (used for residual reports).
+FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& points);
+
+} // namespace railodd::geometry

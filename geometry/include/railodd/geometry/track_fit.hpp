@@ -1,0 +1,65 @@
+#pragma once
+// Fitting the whole track graph. Edges that continue each other through a
+// vertex (the straight route through a switch, both routes over a diamond
+// crossing, a way split) are chained and fitted as one alignment, so position,
+// heading and curvature are continuous across those links by construction.
+// A branch leaving a switch starts (or ends) exactly with the pose and
+// curvature of the chain it leaves, so its link is G2 as well.
+#include "railodd/geometry/fit_alignment.hpp"
+#include "railodd/geometry/track_graph.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace railodd::geometry {
+
+struct ChainItem {
+    std::size_t edge = 0;
+    bool reversed = false; // the chain runs from the edge's `to` vertex to its `from` vertex
+};
+
+// How a chain end is attached: free (buffer stop, end of data, a junction
+// without a through route) or tied to the chain passing through the vertex.
+struct ChainEnd {
+    std::size_t vertex = 0;
+    bool tied = false;
+    std::size_t to_chain = 0; // the chain it is tied to, if tied
+};
+
+struct Chain {
+    std::vector<ChainItem> items;
+    ChainEnd start, end;
+};
+
+struct FittedEdge {
+    std::size_t edge = 0;
+    std::size_t chain = 0;
+    bool reversed = false; // alignment runs against the graph edge's node order
+    Alignment alignment;
+    FitQuality quality;    // the edge's mapped nodes against its alignment
+};
+
+struct LinkReport {
+    std::size_t vertex = 0;
+    std::string kind;     // "through", "branch" or "free"
+    double gap_m = 0.0;   // position mismatch at the link
+    double heading_rad = 0.0;
+    double curvature = 0.0;
+};
+
+struct FittedNetwork {
+    std::vector<Chain> chains;
+    std::vector<FittedEdge> edges; // one per graph edge, in edge order
+    std::vector<LinkReport> branch_links;
+    std::size_t untied_branch_ends = 0; // branch ends whose through chain was not fitted first (cycles)
+    std::size_t degenerate_chains = 0;  // all nodes at one position: kept as zero-length lines
+};
+
+// Pairs edge ends at every vertex into through routes (deflection below
+// max_deflection_rad) and builds the chains.
+std::vector<Chain> build_chains(const TrackGraph& graph, double max_deflection_rad = 0.5);
+
+FittedNetwork fit_track_graph(const TrackGraph& graph, const FitOptions& options);
+
+} // namespace railodd::geometry

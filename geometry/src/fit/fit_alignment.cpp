@@ -1,0 +1,373 @@
+// Window-by-window fitting: a fine clothoid spline estimates the curvature
+// diagram, dynamic programming reads lines / arcs / transitions off it, and a
+// least-squares fit of that structure against the mapped nodes gives the
+// final alignment. See docs/geometry.md.
+#include "railodd/geometry/fit_alignment.hpp"
+
+#include "curvature_model.hpp"
+#include "least_squares.hpp"
+#include "railodd/geometry/indexed_alignment.hpp"
+#include "segmentation.hpp"
+#include "structure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace railodd::geometry {
+
+namespace {
+
+using fit::CurvatureModel;
+using fit::Point2;
+
+std::vector<double> chainage(const std::vector<Point2>& p) {
+    std::vector<double> t(p.size(), 0.0);
+    for (std::size_t i = 1; i < p.size(); ++i) {
+        t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
+    }
+    return t;
+}
+
+// Heading of the polyline as a function of chainage: chord directions,
+// unwrapped, at chord midpoints; linear in between. Chords shorter than
+// min_chord are skipped (their direction is mostly noise: 0.3 m of scatter on
+// a 2 m chord turns it by 0.2 rad).
+class ChordHeading {
+public:
+    ChordHeading(const std::vector<Point2>& p, double min_chord) {
+        const std::vector<double> t = chainage(p);
+        std::size_t from = 0;
+        for (std::size_t i = 1; i < p.size(); ++i) {
+            const double len = std::hypot(p[i].x - p[from].x, p[i].y - p[from].y);
+            if (len < min_chord && i + 1 < p.size()) {
+                continue;
+            }
+            if (len < 1e-6) {
+                continue;
+            }
+            double h = std::atan2(p[i].y - p[from].y, p[i].x - p[from].x);
+            if (!hdg_.empty()) {
+                h += 2 * std::numbers::pi * std::round((hdg_.back() - h) / (2 * std::numbers::pi));
+            }
+            mid_.push_back(0.5 * (t[i] + t[from]));
+            hdg_.push_back(h);
+            from = i;
+        }
+    }
+    double at(double s) const {
+        if (mid_.size() == 1 || s <= mid_.front()) {
+            return hdg_.front();
+        }
+        if (s >= mid_.back()) {
+            return hdg_.back();
+        }
+        const auto it = std::upper_bound(mid_.begin(), mid_.end(), s);
+        const std::size_t j = static_cast<std::size_t>(it - mid_.begin());
+        const double f = (s - mid_[j - 1]) / (mid_[j] - mid_[j - 1]);
+        return hdg_[j - 1] + f * (hdg_[j] - hdg_[j - 1]);
+    }
+    bool empty() const noexcept { return hdg_.empty(); }
+
+private:
+    std::vector<double> mid_, hdg_;
+};
+
+struct WindowEnds {
+    std::optional<Pose> start;
+    std::optional<Pose> end;
+};
+
+// Knot chainages of the fine spline: about every knot_spacing where nodes are
+// dense, at the nodes themselves where they are sparse (long straights), so
+// that no knot interval is without data.
+std::vector<double> knot_chainages(const std::vector<double>& t, double spacing) {
+    std::vector<double> knots{0.0};
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        if (t[i] - knots.back() >= spacing) {
+            // Split long gaps between this and the previous knot evenly at node density.
+            knots.push_back(t[i]);
+        }
+    }
+    if (t.back() - knots.back() > 1e-6) {
+        if (knots.size() > 1 && t.back() - knots.back() < 0.5 * spacing) {
+            knots.back() = t.back(); // a short tail joins the last interval
+        } else {
+            knots.push_back(t.back());
+        }
+    }
+    return knots;
+}
+
+// The fine clothoid spline: every knot curvature free.
+CurvatureModel fine_spline(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
+    const std::vector<double> t = chainage(p);
+    const ChordHeading heading(p, std::max(5.0, 15.0 * o.noise_sigma_m));
+    CurvatureModel m;
+    m.start_free = !ends.start;
+    m.start = ends.start.value_or(Pose{p.front().x, p.front().y, heading.at(0.0), 0.0});
+    std::vector<double> knots = knot_chainages(t, o.knot_spacing_m);
+    if (knots.size() < 2) {
+        knots = {0.0, std::max(t.back(), 1.0)};
+    }
+    const double h = o.knot_spacing_m;
+    auto curvature_at = [&](double s) { return (heading.at(s + h) - heading.at(s - h)) / (2 * h); };
+    if (ends.start) {
+        m.knot_var.push_back(-1);
+        m.knot_fixed.push_back(ends.start->curvature);
+    } else {
+        m.curv.push_back(curvature_at(0.0));
+        m.knot_var.push_back(0);
+        m.knot_fixed.push_back(0.0);
+    }
+    for (std::size_t k = 1; k < knots.size(); ++k) {
+        const double length = knots[k] - knots[k - 1];
+        if (k + 1 == knots.size() && ends.end) {
+            m.push_segment(length, false, -1, ends.end->curvature);
+        } else {
+            m.curv.push_back(curvature_at(knots[k]));
+            m.push_segment(length, false, static_cast<int>(m.curv.size() - 1));
+        }
+    }
+    return m;
+}
+
+fit::SolveOptions solve_options(const WindowEnds& ends, const FitOptions& o) {
+    fit::SolveOptions so;
+    so.sigma_m = o.noise_sigma_m;
+    so.pin_first = !ends.start;
+    so.pin_last = true;
+    so.end = ends.end;
+    return so;
+}
+
+struct WindowFit {
+    CurvatureModel model;
+    fit::SolveReport report;
+    bool fallback = false;
+};
+
+std::size_t free_parameters(const CurvatureModel& m) { return fit::ParameterMap(m).size(); }
+
+// Is the structured fit (few parameters) as good as the fine spline (many)?
+// An F-test on the residual sums of squares: the extra parameters of the
+// spline must buy a significant improvement, or the simpler model wins. The
+// largest deviation may not grow by more than two noise sigmas either.
+bool as_good(const fit::SolveReport& s, std::size_t ps, const fit::SolveReport& f, std::size_t pf, std::size_t n,
+             double sigma) {
+    if (s.max_m > f.max_m + 2 * sigma) {
+        return false;
+    }
+    const double rss_s = s.rms_m * s.rms_m * static_cast<double>(n);
+    const double rss_f = f.rms_m * f.rms_m * static_cast<double>(n);
+    if (pf <= ps || n <= pf) {
+        return rss_s <= rss_f * 1.1 + 1e-12;
+    }
+    // The spline's residuals never fall below the mapping noise by much; the
+    // floor keeps an overfitting spline from rejecting the right structure.
+    const double noise_var = std::max(rss_f / static_cast<double>(n), 0.8 * sigma * sigma);
+    const double f_stat = ((rss_s - rss_f) / static_cast<double>(pf - ps)) / noise_var;
+    return f_stat < 2.0;
+}
+
+// Candidate structures read off the curvature diagram at several noise
+// scales and penalties, simplest first, without repeats.
+std::vector<std::vector<fit::Piece>> candidate_structures(const std::vector<double>& ks, const std::vector<double>& kk) {
+    std::vector<std::vector<fit::Piece>> out{fit::template_structure(ks, kk)};
+    for (double sigma : {2e-4, 1.4e-4, 1e-4, 7e-5, 5e-5, 3.5e-5, 2.5e-5, 1.7e-5}) {
+        for (double penalty : {32.0, 8.0, 2.0}) {
+            auto pieces = fit::segment_curvature(ks, kk, {sigma, penalty});
+            const bool seen = std::any_of(out.begin(), out.end(), [&](const auto& o) {
+                return o.size() == pieces.size() &&
+                       std::equal(o.begin(), o.end(), pieces.begin(), [](const fit::Piece& a, const fit::Piece& b) {
+                           return a.kind == b.kind && std::abs(a.length - b.length) < 1.0;
+                       });
+            });
+            if (!seen && !pieces.empty()) {
+                out.push_back(std::move(pieces));
+            }
+        }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    return out;
+}
+
+WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
+    CurvatureModel fine = fine_spline(p, ends, o);
+    fit::SolveOptions so = solve_options(ends, o);
+    so.kink_sigma = o.kink_sigma;
+    so.ridge_sigma = o.ridge_sigma;
+    const fit::SolveReport fine_report = fit::solve(fine, p, so);
+    so.kink_sigma = 0.0;
+    so.ridge_sigma = 0.0;
+
+    std::vector<double> ks, kk;
+    double s = 0.0;
+    for (std::size_t k = 0; k < fine.knot_var.size(); ++k) {
+        ks.push_back(s);
+        kk.push_back(fine.knot_curvature(k));
+        s += k < fine.segments() ? fine.lengths[k] : 0.0;
+    }
+    fit::StructureEnds se;
+    se.start = ends.start.value_or(fine.start);
+    se.start_fixed = ends.start.has_value();
+    if (ends.end) {
+        se.end_curvature = ends.end->curvature;
+    }
+    // Candidates come simplest first: the first as good as the fine spline wins.
+    const std::size_t pf = free_parameters(fine);
+    for (auto& pieces : candidate_structures(ks, kk)) {
+        CurvatureModel m = fit::build_structure(std::move(pieces), se);
+        const fit::SolveReport r = fit::solve(m, p, so);
+        if (as_good(r, free_parameters(m), fine_report, pf, p.size(), o.noise_sigma_m)) {
+            return {std::move(m), r, false};
+        }
+    }
+    return {std::move(fine), fine_report, true};
+}
+
+} // namespace
+
+std::vector<double> distances(const Alignment& alignment, const std::vector<Point>& points) {
+    std::vector<double> d;
+    if (points.empty()) {
+        return d;
+    }
+    const IndexedAlignment ia(alignment, 2.0);
+    d.reserve(points.size());
+    for (const auto& p : points) {
+        d.push_back(ia.project(p.x, p.y).distance);
+    }
+    return d;
+}
+
+FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& points) {
+    FitQuality q;
+    q.points = points.size();
+    std::vector<double> d = distances(alignment, points);
+    if (d.empty()) {
+        return q;
+    }
+    double sum = 0.0;
+    for (double x : d) {
+        sum += x * x;
+    }
+    q.rms_m = std::sqrt(sum / static_cast<double>(d.size()));
+    std::sort(d.begin(), d.end());
+    q.max_m = d.back();
+    q.p95_m = d[static_cast<std::size_t>(std::floor(0.95 * static_cast<double>(d.size() - 1)))];
+    return q;
+}
+
+namespace {
+
+// The primitives of `a` up to arc length s (the one containing s cut there)
+// and the pose at s. Cutting a line, arc or clothoid is exact.
+std::vector<Primitive> head_until(const Alignment& a, double s, Pose& at) {
+    std::vector<Primitive> head;
+    Pose p = a.start;
+    double done = 0.0;
+    for (const Primitive& prim : a.primitives) {
+        if (done + prim.length >= s) {
+            const double ds = s - done;
+            if (ds > 1e-9) {
+                Primitive cut = prim;
+                cut.length = ds;
+                cut.curv_end = prim.curv_start + (prim.curv_end - prim.curv_start) * ds / prim.length;
+                if (cut.kind == PrimitiveKind::spiral && cut.curv_end == cut.curv_start) {
+                    cut.kind = cut.curv_start == 0.0 ? PrimitiveKind::line : PrimitiveKind::arc;
+                }
+                head.push_back(cut);
+            }
+            at = evaluate(p, prim, ds);
+            return head;
+        }
+        head.push_back(prim);
+        p = evaluate(p, prim, prim.length);
+        done += prim.length;
+    }
+    at = p;
+    return head;
+}
+
+std::vector<Point2> without_repeats(const std::vector<Point>& in) {
+    std::vector<Point2> out;
+    for (const auto& p : in) {
+        if (out.empty() || std::hypot(p.x - out.back().x, p.y - out.back().y) > 1e-6) {
+            out.push_back({p.x, p.y});
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
+                        const std::optional<Pose>& end, const FitOptions& o) {
+    const std::vector<Point2> p = without_repeats(points);
+    if (p.size() < 2) {
+        throw std::invalid_argument("fit_alignment: fewer than two distinct points");
+    }
+    const std::vector<double> t = chainage(p);
+    FitResult result;
+    std::optional<Pose> window_start = start;
+    std::optional<Pose> end_pose = end;
+    if (end_pose) {
+        // Headings are never wrapped along an alignment: the end target must be
+        // the turn of the mapped line away from the start, not that plus 2 pi.
+        const ChordHeading h(p, std::max(5.0, 15.0 * o.noise_sigma_m));
+        const double start_hdg = start ? start->hdg : h.at(0.0);
+        const double expected = start_hdg + (h.at(t.back()) - h.at(0.0));
+        end_pose->hdg += 2 * std::numbers::pi * std::round((expected - end_pose->hdg) / (2 * std::numbers::pi));
+    }
+    std::size_t i0 = 0;
+    while (true) {
+        std::size_t i1 = i0 + 1;
+        const bool last = t.back() - t[i0] <= 1.5 * o.window_m;
+        if (last) {
+            i1 = p.size() - 1;
+        } else {
+            while (i1 + 1 < p.size() && t[i1 + 1] - t[i0] <= o.window_m) {
+                ++i1;
+            }
+        }
+        const std::vector<Point2> wp(p.begin() + static_cast<long>(i0), p.begin() + static_cast<long>(i1) + 1);
+        WindowFit w = fit_window(wp, {window_start, last ? end_pose : std::nullopt}, o);
+        ++result.quality.windows;
+        result.quality.fallback_windows += w.fallback ? 1 : 0;
+        Alignment a = w.model.to_alignment();
+        if (result.alignment.primitives.empty()) {
+            result.alignment.start = a.start;
+        }
+        if (last) {
+            result.alignment.primitives.insert(result.alignment.primitives.end(), a.primitives.begin(), a.primitives.end());
+            break;
+        }
+        // Keep the first ~60 % of the window; the next window starts exactly where it ends.
+        std::size_t k = i0 + 1;
+        while (k < i1 && t[k] - t[i0] < 0.6 * o.window_m) {
+            ++k;
+        }
+        const double split = IndexedAlignment(a, 2.0).project(p[k].x, p[k].y).s;
+        Pose at;
+        const std::vector<Primitive> head = head_until(a, split, at);
+        result.alignment.primitives.insert(result.alignment.primitives.end(), head.begin(), head.end());
+        window_start = at;
+        i0 = k;
+    }
+    std::vector<Point> all;
+    all.reserve(p.size());
+    for (const auto& q : p) {
+        all.push_back({q.x, q.y});
+    }
+    const FitQuality q = measure_fit(result.alignment, all);
+    result.quality.points = q.points;
+    result.quality.rms_m = q.rms_m;
+    result.quality.p95_m = q.p95_m;
+    result.quality.max_m = q.max_m;
+    return result;
+}
+
+} // namespace railodd::geometry

@@ -1,0 +1,39 @@
+#pragma once
+// Levenberg-Marquardt on a CurvatureModel: orthogonal distances of the data
+// points to the curve, plus optional smoothness of the knot curvatures and an
+// optional end pose the curve must reach.
+#include "curvature_model.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+struct Point2 {
+    double x = 0.0;
+    double y = 0.0;
+};
+
+struct SolveOptions {
+    double sigma_m = 0.3;           // expected noise of the points: residual scale
+    double kink_sigma = 0.0;        // > 0: penalise second differences of knot curvatures by this scale (1/m)
+    double ridge_sigma = 0.0;       // > 0: pull knot curvatures towards zero (lines) where data is sparse
+    double min_length_m = 0.5;      // free segment lengths stay at least this long
+    int max_iterations = 40;
+    bool pin_first = true;          // the first point marks the curve's start (along-track residual too)
+    bool pin_last = true;           // the last point marks its end
+    std::optional<Pose> end;        // end pose (x, y, hdg, curvature) to reach
+};
+
+struct SolveReport {
+    double rms_m = 0.0;
+    double max_m = 0.0;
+    int iterations = 0;
+};
+
+// Distances of every point to the model's curve (after the last update).
+std::vector<double> point_distances(const CurvatureModel& model, const std::vector<Point2>& points);
+
+SolveReport solve(CurvatureModel& model, const std::vector<Point2>& points, const SolveOptions& options);
+
+} // namespace railodd::geometry::fit

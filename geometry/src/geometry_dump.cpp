@@ -1,0 +1,165 @@
+#include "railodd/geometry/dump.hpp"
+
+#include "railodd/util/json_text.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace railodd::geometry {
+
+using nlohmann::ordered_json;
+
+namespace {
+
+std::vector<std::int64_t> way_ids(const GraphEdge& e) {
+    std::vector<std::int64_t> ids;
+    for (const auto& w : e.ways) {
+        if (std::find(ids.begin(), ids.end(), w.way_id) == ids.end()) {
+            ids.push_back(w.way_id);
+        }
+    }
+    return ids;
+}
+
+ordered_json primitive_counts(const Alignment& a) {
+    std::size_t n[3] = {0, 0, 0};
+    for (const auto& p : a.primitives) {
+        ++n[static_cast<int>(p.kind)];
+    }
+    return {{"line", n[0]}, {"arc", n[1]}, {"spiral", n[2]}};
+}
+
+double round_to(double v, double unit) { return std::round(v / unit) * unit; }
+
+struct Totals {
+    std::vector<double> d;
+    double length = 0.0;
+    std::size_t fallback = 0;
+};
+
+ordered_json track_entry(const GraphEdge& e, const FittedEdge& f, Totals& t) {
+    std::vector<Point> pts;
+    for (const auto& n : e.nodes) {
+        pts.push_back({n.xy.x, n.xy.y});
+    }
+    const std::vector<double> d = distances(f.alignment, pts);
+    t.d.insert(t.d.end(), d.begin(), d.end());
+    t.length += length(f.alignment);
+    return {{"edge", e.id},
+            {"osm_ways", way_ids(e)},
+            {"from_node", e.nodes.front().id},
+            {"to_node", e.nodes.back().id},
+            {"reversed", f.reversed},
+            {"length_m", round_to(length(f.alignment), 1e-3)},
+            {"primitives", primitive_counts(f.alignment)},
+            {"nodes", f.quality.points},
+            {"rms_m", round_to(f.quality.rms_m, 1e-4)},
+            {"p95_m", round_to(f.quality.p95_m, 1e-4)},
+            {"max_m", round_to(f.quality.max_m, 1e-4)}};
+}
+
+ordered_json links_entry(const FittedNetwork& net) {
+    double gap = 0, hdg = 0, curv = 0;
+    for (const auto& l : net.branch_links) {
+        gap = std::max(gap, l.gap_m);
+        hdg = std::max(hdg, l.heading_rad);
+        curv = std::max(curv, l.curvature);
+    }
+    return {{"branch_links", net.branch_links.size()},
+            {"untied_branch_ends", net.untied_branch_ends},
+            {"degenerate_chains", net.degenerate_chains},
+            {"max_gap_m", gap},
+            {"max_heading_jump_rad", hdg},
+            {"max_curvature_jump", curv}};
+}
+
+} // namespace
+
+ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net) {
+    Totals t;
+    ordered_json tracks = ordered_json::array();
+    for (const auto& f : net.edges) {
+        tracks.push_back(track_entry(graph.edges[f.edge], f, t));
+    }
+    std::sort(t.d.begin(), t.d.end());
+    auto pct = [&](double q) {
+        return t.d.empty() ? 0.0 : t.d[static_cast<std::size_t>(std::floor(q * static_cast<double>(t.d.size() - 1)))];
+    };
+    std::size_t switches = 0, crossings = 0;
+    for (const auto& v : graph.vertices) {
+        switches += v.kind == VertexKind::switch_ ? 1 : 0;
+        crossings += v.kind == VertexKind::crossing ? 1 : 0;
+    }
+    ordered_json summary = {{"edges", graph.edges.size()},
+                            {"chains", net.chains.size()},
+                            {"switch_vertices", switches},
+                            {"crossing_vertices", crossings},
+                            {"length_km", round_to(t.length / 1000.0, 1e-6)},
+                            {"nodes", t.d.size()},
+                            {"node_distance_p50_m", round_to(pct(0.5), 1e-4)},
+                            {"node_distance_p95_m", round_to(pct(0.95), 1e-4)},
+                            {"node_distance_max_m", round_to(t.d.empty() ? 0.0 : t.d.back(), 1e-4)},
+                            {"links", links_entry(net)}};
+    return {{"summary", summary}, {"tracks", tracks}};
+}
+
+namespace {
+
+void append_point(std::string& out, const Pose& p, const ingest::LocalProjection& proj, bool first) {
+    const ingest::LonLat ll = proj.inverse({p.x, p.y});
+    out += first ? "[" : ",[";
+    append_json_number(out, std::round(ll.lon * 1e8) / 1e8);
+    out += ',';
+    append_json_number(out, std::round(ll.lat * 1e8) / 1e8);
+    out += ']';
+}
+
+// Lines need their ends only; curves a point every 5 m.
+void append_samples(std::string& out, const Alignment& a, const ingest::LocalProjection& proj) {
+    Pose at = a.start;
+    append_point(out, at, proj, true);
+    for (const auto& p : a.primitives) {
+        const int n = p.kind == PrimitiveKind::line ? 1 : std::max(1, static_cast<int>(std::ceil(p.length / 5.0)));
+        for (int i = 1; i <= n; ++i) {
+            append_point(out, evaluate(at, p, p.length * i / n), proj, false);
+        }
+        at = evaluate(at, p, p.length);
+    }
+}
+
+} // namespace
+
+std::string to_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& proj,
+                       const char* layer) {
+    std::string out = "{\"type\":\"FeatureCollection\",\"features\":[\n";
+    for (std::size_t i = 0; i < net.edges.size(); ++i) {
+        const FittedEdge& f = net.edges[i];
+        const GraphEdge& e = graph.edges[f.edge];
+        out += i ? ",\n" : "";
+        out += "{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
+        append_samples(out, f.alignment, proj);
+        out += "]},\"properties\":{\"layer\":\"";
+        out += layer;
+        out += "\",\"edge\":";
+        append_json_number(out, static_cast<std::int64_t>(e.id));
+        out += ",\"osm_ways\":[";
+        const auto ids = way_ids(e);
+        for (std::size_t k = 0; k < ids.size(); ++k) {
+            out += k ? "," : "";
+            append_json_number(out, ids[k]);
+        }
+        out += "],\"primitives\":\"";
+        for (const auto& p : f.alignment.primitives) {
+            out += p.kind == PrimitiveKind::line ? 'L' : p.kind == PrimitiveKind::arc ? 'A' : 'S';
+        }
+        out += "\",\"rms_m\":";
+        append_json_number(out, std::round(f.quality.rms_m * 1e4) / 1e4);
+        out += ",\"max_m\":";
+        append_json_number(out, std::round(f.quality.max_m * 1e4) / 1e4);
+        out += "}}";
+    }
+    out += "\n]}\n";
+    return out;
+}
+
+} // namespace railodd::geometry
