@@ -1,6 +1,7 @@
 #include "convert_command.hpp"
 
 #include "railodd/geometry/dump.hpp"
+#include "railodd/geometry/road_fit.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/ingest/dump.hpp"
 #include "railodd/ingest/ogr_reader.hpp"
@@ -115,8 +116,6 @@ struct Geometry {
     geometry::FittedNetwork fitted_roads;
 };
 
-// Roads are drawn less carefully than track and their curves are not
-// transition-designed: a looser noise scale keeps their fits simple.
 Geometry fit_geometry(const ingest::IngestResult& r, PhaseTimer& timer) {
     Geometry g;
     timer.start("track_graph");
@@ -125,9 +124,7 @@ Geometry fit_geometry(const ingest::IngestResult& r, PhaseTimer& timer) {
     g.fitted_tracks = geometry::fit_track_graph(g.tracks, geometry::FitOptions{});
     timer.start("fit_roads");
     g.roads = geometry::build_track_graph(r.roads, {});
-    geometry::FitOptions road;
-    road.noise_sigma_m = 0.5;
-    g.fitted_roads = geometry::fit_track_graph(g.roads, road);
+    g.fitted_roads = geometry::fit_road_graph(g.roads, geometry::RoadFitOptions{});
     timer.stop();
     return g;
 }

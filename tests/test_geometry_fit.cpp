@@ -155,8 +155,11 @@ std::vector<CurveCase> curve_cases() {
 
 INSTANTIATE_TEST_SUITE_P(Radii, FitSimpleCurve, ::testing::ValuesIn(curve_cases()),
                          [](const auto& info) {
-                             return "R" + std::to_string(static_cast<int>(info.param.radius)) + "_seed" +
-                                    std::to_string(info.param.seed);
+                             std::string name = "R";
+                             name += std::to_string(static_cast<int>(info.param.radius));
+                             name += "_seed";
+                             name += std::to_string(info.param.seed);
+                             return name;
                          });
 
 TEST(FitAlignment, NineOutOfTenCurvesStayWithinHalfAMetre) {

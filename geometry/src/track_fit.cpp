@@ -1,6 +1,7 @@
 // Fitting the track graph chain by chain, through routes before the branches
 // that leave them, so every branch can start with the exact pose of its switch.
 #include "railodd/geometry/indexed_alignment.hpp"
+#include "railodd/geometry/road_fit.hpp"
 #include "railodd/geometry/track_fit.hpp"
 
 #include <algorithm>
@@ -139,6 +140,12 @@ private:
             ++degenerate_;
         } else {
             r = fit_alignment(cg.points, start, end, o_);
+            if (r.quality.max_m > fallback_deviation_m) {
+                // No G2 sequence came within reach of every mapped node (tram
+                // corners, kinks): filleted lines keep all nodes close, G1 only.
+                r.alignment = fillet_polyline(cg.points, {1000.0, 0.25});
+                fallback_.push_back(c);
+            }
         }
         FittedChain& f = fitted_[c];
         const IndexedAlignment ia(r.alignment, 2.0);
@@ -179,6 +186,7 @@ private:
         net.chains = chains_;
         net.untied_branch_ends = untied_;
         net.degenerate_chains = degenerate_;
+        net.g1_chains = fallback_;
         return net;
     }
 
@@ -210,6 +218,8 @@ private:
     std::map<std::size_t, bool> in_progress_;
     std::size_t untied_ = 0;
     std::size_t degenerate_ = 0;
+    std::vector<std::size_t> fallback_;
+    static constexpr double fallback_deviation_m = 2.0;
 };
 
 } // namespace

@@ -56,6 +56,12 @@ public:
             hdg_.push_back(h);
             from = i;
         }
+        if (hdg_.empty()) {
+            // Every chord too short to trust (or the points coincide with the
+            // first): the overall direction is the best guess there is.
+            mid_.push_back(0.5 * t.back());
+            hdg_.push_back(std::atan2(p.back().y - p.front().y, p.back().x - p.front().x));
+        }
     }
     double at(double s) const {
         if (mid_.size() == 1 || s <= mid_.front()) {

@@ -54,6 +54,7 @@ struct FittedNetwork {
     std::vector<LinkReport> branch_links;
     std::size_t untied_branch_ends = 0; // branch ends whose through chain was not fitted first (cycles)
     std::size_t degenerate_chains = 0;  // all nodes at one position: kept as zero-length lines
+    std::vector<std::size_t> g1_chains; // chains whose G2 fit strayed over 2 m from a node: filleted lines instead
 };
 
 // Pairs edge ends at every vertex into through routes (deflection below
