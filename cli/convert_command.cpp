@@ -1,6 +1,7 @@
 #include "convert_command.hpp"
 
 #include "railodd/geometry/dump.hpp"
+#include "railodd/geometry/profiles.hpp"
 #include "railodd/geometry/road_fit.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/ingest/dump.hpp"
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <optional>
 #include <filesystem>
 #include <iostream>
 
@@ -29,6 +31,11 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--polygon", opt_.polygon, "Select by a GeoJSON (Multi)Polygon file");
     app->add_option("--relation", opt_.relation, "Select the ways of an OSM rail route relation (id)");
     app->add_option("--field-mapping", opt_.field_mapping, "YAML mapping of vector fields onto OSM tags");
+    app->add_option("--dem", opt_.dem, "Elevation raster(s) for the vertical profile (repeat for several tiles)");
+    app->add_option("--node-noise", opt_.node_noise_m,
+                    "Expected scatter (m) of mapped track nodes about the true centreline; the fit's model selection scale")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01, 5.0));
     app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
@@ -112,16 +119,26 @@ namespace {
 struct Geometry {
     geometry::TrackGraph tracks;
     geometry::FittedNetwork fitted_tracks;
+    std::vector<geometry::VerticalProfile> profiles;
     geometry::TrackGraph roads;
     geometry::FittedNetwork fitted_roads;
 };
 
-Geometry fit_geometry(const ingest::IngestResult& r, PhaseTimer& timer) {
+Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files, double node_noise_m,
+                      PhaseTimer& timer) {
     Geometry g;
     timer.start("track_graph");
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
     timer.start("fit_tracks");
-    g.fitted_tracks = geometry::fit_track_graph(g.tracks, geometry::FitOptions{});
+    geometry::FitOptions fo;
+    fo.noise_sigma_m = node_noise_m;
+    g.fitted_tracks = geometry::fit_track_graph(g.tracks, fo);
+    timer.start("vertical_profiles");
+    std::optional<geometry::ElevationModel> dem;
+    if (!dem_files.empty()) {
+        dem.emplace(std::vector<std::filesystem::path>(dem_files.begin(), dem_files.end()));
+    }
+    g.profiles = geometry::fit_profiles(g.tracks, g.fitted_tracks, r.tracks, r.projection, dem ? &*dem : nullptr);
     timer.start("fit_roads");
     g.roads = geometry::build_track_graph(r.roads, {});
     g.fitted_roads = geometry::fit_road_graph(g.roads, geometry::RoadFitOptions{});
@@ -148,7 +165,7 @@ int ConvertCommand::run() {
 
     // Phase 2: track graph and railway-grade centrelines; road centrelines.
     PhaseTimer timer;
-    const Geometry geo = fit_geometry(result, timer);
+    const Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, timer);
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 
     // Phase 3: stage every output, then move them into place together.
@@ -158,6 +175,7 @@ int ConvertCommand::run() {
     stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));
     nlohmann::ordered_json report = make_report(result);
     report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
+    report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
     report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace railodd::cli {
 
@@ -16,7 +17,9 @@ struct ConvertOptions {
     std::string polygon;
     std::optional<std::int64_t> relation;
     std::string field_mapping;
+    std::vector<std::string> dem; // elevation rasters (GeoTIFF, HGT, VRT; several tiles)
     double road_corridor_m = 300.0;
+    double node_noise_m = 0.1; // OSM track nodes traced from imagery: about a decimetre
     double feature_distance_m = 50.0;
     double station_distance_m = 500.0;
     unsigned threads = 0; // 0: libosmium's default pool size

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/railodd sample -o out/sample
-./build/railodd convert out/sample/sample_route.osm -o out/sample_route
+./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"

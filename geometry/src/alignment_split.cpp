@@ -12,8 +12,10 @@ Primitive part_of(const Primitive& p, double ds0, double ds1) {
     q.length = ds1 - ds0;
     if (p.kind == PrimitiveKind::spiral && p.length > 0) {
         const double rate = (p.curv_end - p.curv_start) / p.length;
-        q.curv_start = p.curv_start + rate * ds0;
-        q.curv_end = p.curv_start + rate * ds1;
+        // The primitive's own end values where the part reaches them, so that
+        // curvature matches its neighbours exactly, not to the last bit.
+        q.curv_start = ds0 == 0.0 ? p.curv_start : p.curv_start + rate * ds0;
+        q.curv_end = ds1 == p.length ? p.curv_end : p.curv_start + rate * ds1;
     }
     return q;
 }

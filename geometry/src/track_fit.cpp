@@ -202,7 +202,7 @@ private:
             const bool flipped = std::abs(turn) > std::numbers::pi / 2;
             const double dh = flipped ? std::remainder(turn - std::numbers::pi, 2 * std::numbers::pi) : turn;
             const double dk = flipped ? own.curvature + other.curvature : own.curvature - other.curvature;
-            net.branch_links.push_back({e.vertex, at_start ? "branch_start" : "branch_end",
+            net.branch_links.push_back({e.vertex, c, e.to_chain, at_start ? "branch_start" : "branch_end",
                                         std::hypot(own.x - other.x, own.y - other.y), std::abs(dh), std::abs(dk)});
         };
         report(ch.start, evaluate(a, 0.0), true);

@@ -107,6 +107,31 @@ std::vector<double> knot_chainages(const std::vector<double>& t, double spacing)
     return knots;
 }
 
+// A branch tied to its switch must leave along the main track and then bend
+// away at turnout radius (190-500 m) within a few tens of metres; mappers
+// often draw that as one kinked segment. Extra knots there let the spline
+// follow it.
+void add_turnout_knots(std::vector<double>& knots, bool start_tied, bool end_tied, double spacing) {
+    const double total = knots.back();
+    std::vector<double> extra;
+    for (double d = spacing; d < 4.5 * spacing && d < 0.4 * total; d += spacing) {
+        if (start_tied) {
+            extra.push_back(d);
+        }
+        if (end_tied) {
+            extra.push_back(total - d);
+        }
+    }
+    for (double e : extra) {
+        const auto it = std::lower_bound(knots.begin(), knots.end(), e);
+        const bool near = (it != knots.end() && *it - e < 0.5 * spacing) ||
+                          (it != knots.begin() && e - *(it - 1) < 0.5 * spacing);
+        if (!near) {
+            knots.insert(it, e);
+        }
+    }
+}
+
 // The fine clothoid spline: every knot curvature free.
 CurvatureModel fine_spline(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
     const std::vector<double> t = chainage(p);
@@ -118,6 +143,7 @@ CurvatureModel fine_spline(const std::vector<Point2>& p, const WindowEnds& ends,
     if (knots.size() < 2) {
         knots = {0.0, std::max(t.back(), 1.0)};
     }
+    add_turnout_knots(knots, ends.start.has_value(), ends.end.has_value(), o.knot_spacing_m);
     const double h = o.knot_spacing_m;
     auto curvature_at = [&](double s) { return (heading.at(s + h) - heading.at(s - h)) / (2 * h); };
     if (ends.start) {

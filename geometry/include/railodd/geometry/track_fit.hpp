@@ -42,6 +42,8 @@ struct FittedEdge {
 
 struct LinkReport {
     std::size_t vertex = 0;
+    std::size_t chain = 0;    // the branch
+    std::size_t to_chain = 0; // the chain it leaves
     std::string kind;     // "through", "branch" or "free"
     double gap_m = 0.0;   // position mismatch at the link
     double heading_rad = 0.0;

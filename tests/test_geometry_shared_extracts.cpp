@@ -1,0 +1,69 @@
+// Track fitting on real extracts: every mapped track covered, mapped nodes
+// close to the fitted line, links continuous where the G2 fit held.
+#include "railodd/geometry/track_fit.hpp"
+#include "railodd/ingest/osm_reader.hpp"
+#include "test_support.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+using namespace railodd;
+using namespace railodd::geometry;
+
+namespace {
+
+struct Figures {
+    double p95 = 0.0, max = 0.0;
+    std::size_t edges = 0, covered = 0, g1 = 0;
+};
+
+Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
+    const ingest::IngestResult r = ingest::read_osm(file, {});
+    const TrackGraph g = build_track_graph(r.tracks, r.features);
+    FitOptions o;
+    o.noise_sigma_m = 0.1; // as railodd convert's default for OSM
+    net = fit_track_graph(g, o);
+    Figures f;
+    std::vector<double> d;
+    for (const auto& e : net.edges) {
+        std::vector<Point> pts;
+        for (const auto& n : g.edges[e.edge].nodes) {
+            pts.push_back({n.xy.x, n.xy.y});
+        }
+        const auto de = distances(e.alignment, pts);
+        d.insert(d.end(), de.begin(), de.end());
+        f.covered += e.alignment.primitives.empty() ? 0 : 1;
+    }
+    f.edges = g.edges.size();
+    f.g1 = net.g1_chains.size();
+    std::sort(d.begin(), d.end());
+    f.p95 = d[d.size() * 95 / 100];
+    f.max = d.back();
+    return f;
+}
+
+} // namespace
+
+TEST(GeometrySharedExtracts, NodesLieWithinHalfAMetreAtP95AndTwoMetresAtMost) {
+    RAILODD_REQUIRE_SHARED_DATA();
+    for (const char* name : {"gh_harsdorf.osm.pbf", "valhalla_liechtenstein-latest.osm.pbf",
+                             "gh_north-bayreuth.osm.gz", "gh_lauf-200115.osm.pbf"}) {
+        SCOPED_TRACE(name);
+        FittedNetwork net;
+        const Figures f = fit_extract(test::shared_data() / "osm" / name, net);
+        std::cout << name << ": p95 " << f.p95 << " m, max " << f.max << " m, " << f.edges << " edges, "
+                  << f.g1 << " chains filleted (G1)\n";
+        EXPECT_EQ(f.covered, f.edges) << "every mapped track has a centreline";
+        EXPECT_LE(f.p95, 0.5);
+        EXPECT_LE(f.max, 2.0);
+        auto is_g1 = [&](std::size_t c) {
+            return std::find(net.g1_chains.begin(), net.g1_chains.end(), c) != net.g1_chains.end();
+        };
+        for (const auto& l : net.branch_links) {
+            if (!is_g1(l.chain) && !is_g1(l.to_chain)) {
+                EXPECT_LT(l.gap_m, 1e-3);
+                EXPECT_LT(l.heading_rad, 1e-4);
+            }
+        }
+    }
+}
