@@ -2,6 +2,7 @@
 
 #include "railodd/geometry/dump.hpp"
 #include "railodd/geometry/profiles.hpp"
+#include "railodd/geometry/topology_report.hpp"
 #include "railodd/geometry/road_fit.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/ingest/dump.hpp"
@@ -120,9 +121,23 @@ struct Geometry {
     geometry::TrackGraph tracks;
     geometry::FittedNetwork fitted_tracks;
     std::vector<geometry::VerticalProfile> profiles;
+    nlohmann::ordered_json topology;
     geometry::TrackGraph roads;
     geometry::FittedNetwork fitted_roads;
 };
+
+// Crossings found on the graph; features placed on the fitted centrelines.
+nlohmann::ordered_json topology_of(const ingest::IngestResult& r, const Geometry& g, const ConvertOptions& o) {
+    std::vector<geometry::IndexedAlignment> alignments;
+    alignments.reserve(g.fitted_tracks.edges.size());
+    for (const auto& e : g.fitted_tracks.edges) {
+        alignments.emplace_back(e.alignment, 2.0);
+    }
+    const auto attachment =
+        geometry::attach_features(g.tracks, alignments, r.features, o.feature_distance_m, o.station_distance_m);
+    const auto crossings = geometry::find_crossings(g.tracks, r.tracks, r.roads, r.features);
+    return geometry::topology_report(crossings, attachment, r.features);
+}
 
 Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files, double node_noise_m,
                       PhaseTimer& timer) {
@@ -163,9 +178,13 @@ int ConvertCommand::run() {
         result = ingest::read_osm(opt_.input, io);
     }
 
-    // Phase 2: track graph and railway-grade centrelines; road centrelines.
+    // Phase 2: track graph, railway-grade centrelines and profiles, road
+    // centrelines; then crossings, and features placed on the tracks.
     PhaseTimer timer;
-    const Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, timer);
+    Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, timer);
+    timer.start("topology");
+    geo.topology = topology_of(result, geo, opt_);
+    timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 
     // Phase 3: stage every output, then move them into place together.
@@ -176,6 +195,7 @@ int ConvertCommand::run() {
     nlohmann::ordered_json report = make_report(result);
     report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
     report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
+    report["topology"] = geo.topology;
     report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);
