@@ -10,4 +10,4 @@ bash scripts/build.sh
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
-echo "  conversion (report.json, ingest.geojson): $(pwd)/out/sample_route/"
+echo "  conversion (report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
