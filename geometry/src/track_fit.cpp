@@ -149,10 +149,19 @@ private:
         }
         FittedChain& f = fitted_[c];
         const IndexedAlignment ia(r.alignment, 2.0);
+        // Joints are searched near where the mapped polyline puts them: a
+        // chain that loops back past itself must not hand a joint to the
+        // wrong pass.
+        std::vector<double> t(cg.points.size(), 0.0);
+        for (std::size_t i = 1; i < t.size(); ++i) {
+            t[i] = t[i - 1] + std::hypot(cg.points[i].x - cg.points[i - 1].x, cg.points[i].y - cg.points[i - 1].y);
+        }
+        const double scale = t.back() > 0 ? ia.length() / t.back() : 1.0;
         double prev = 0.0;
         for (std::size_t j = 0; j < cg.joints.size(); ++j) {
             const Point& q = cg.points[cg.joints[j]];
-            const double s = std::max(prev, ia.project(q.x, q.y).s);
+            const double expected = t[cg.joints[j]] * scale;
+            const double s = std::max(prev, ia.project_within(q.x, q.y, expected - 100.0, expected + 100.0).s);
             f.joint_s.push_back(s);
             const GraphEdge& e = g_.edges[ch.items[j + 1].edge];
             f.vertex_s[ch.items[j + 1].reversed ? e.to : e.from] = s;
