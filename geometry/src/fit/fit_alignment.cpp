@@ -257,6 +257,21 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
             return {std::move(m), r, false};
         }
     }
+    if (fine_report.max_m > 2.0) {
+        // Nothing came within 2 m of every node: a denser, looser spline
+        // (knots at every node, kinks and curvature penalised a tenth as
+        // much) follows tight, kinked mapping and is still G2.
+        FitOptions loose = o;
+        loose.knot_spacing_m = 0.5 * o.knot_spacing_m;
+        CurvatureModel dense = fine_spline(p, ends, loose);
+        fit::SolveOptions ds = solve_options(ends, o);
+        ds.kink_sigma = 10 * o.kink_sigma;
+        ds.ridge_sigma = 10 * o.ridge_sigma;
+        const fit::SolveReport dr = fit::solve(dense, p, ds);
+        if (dr.max_m < fine_report.max_m) {
+            return {std::move(dense), dr, true};
+        }
+    }
     return {std::move(fine), fine_report, true};
 }
 
