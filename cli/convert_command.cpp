@@ -48,6 +48,8 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
     app->add_option("--threads", opt_.threads, "Threads decoding PBF (default: libosmium's choice)");
+    app->add_flag("--estimate-cant", opt_.estimate_cant,
+                  "Estimate equilibrium cant from maxspeed and radius where railway:cant is not mapped (max 160 mm)");
     app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
     return app;
 }
@@ -121,6 +123,7 @@ struct Geometry {
     geometry::TrackGraph tracks;
     geometry::FittedNetwork fitted_tracks;
     std::vector<geometry::VerticalProfile> profiles;
+    std::vector<std::vector<geometry::CantStretch>> cants;
     nlohmann::ordered_json topology;
     geometry::TrackGraph roads;
     geometry::FittedNetwork fitted_roads;
@@ -182,6 +185,10 @@ int ConvertCommand::run() {
     // centrelines; then crossings, and features placed on the tracks.
     PhaseTimer timer;
     Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, timer);
+    timer.start("cant");
+    geometry::CantOptions cant;
+    cant.estimate = opt_.estimate_cant;
+    geo.cants = geometry::fit_cants(geo.tracks, geo.fitted_tracks, result.tracks, cant);
     timer.start("topology");
     geo.topology = topology_of(result, geo, opt_);
     timer.stop();
@@ -195,6 +202,7 @@ int ConvertCommand::run() {
     nlohmann::ordered_json report = make_report(result);
     report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
     report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
+    report["cant"] = geometry::cants_report(geo.cants);
     report["topology"] = geo.topology;
     report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
     if (!opt_.no_timings) {

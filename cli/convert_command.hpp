@@ -24,6 +24,7 @@ struct ConvertOptions {
     double station_distance_m = 500.0;
     unsigned threads = 0; // 0: libosmium's default pool size
     bool no_timings = false;
+    bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
 };
 
 class ConvertCommand : public Command {

@@ -122,3 +122,29 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
     }
     EXPECT_EQ(nlohmann::json::parse(read_file(dir / "1" / "report.json")).count("timings_s"), 0u);
 }
+
+TEST(CliConvert, SampleRouteGeometrySections) {
+    const auto dir = scratch_dir();
+    ASSERT_EQ(run_railodd("sample -o " + quoted(dir / "sample")).exit_code, 0);
+    const auto osm = dir / "sample" / "sample_route.osm";
+    const auto dem = dir / "sample" / "sample_route_dem.tif";
+    const auto r = run_railodd("convert " + quoted(osm) + " -o " + quoted(dir / "out") + " --dem " + quoted(dem));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
+    EXPECT_EQ(report["geometry"]["summary"]["switch_vertices"], 3);
+    EXPECT_EQ(report["geometry"]["summary"]["links"]["g1_fallback_chains"], 0);
+    EXPECT_EQ(report["vertical"]["sources"]["dem"], report["geometry"]["summary"]["edges"]);
+    EXPECT_EQ(report["cant"]["curves_with_tagged_cant"], 1);
+    EXPECT_EQ(report["cant"]["max_cant_mm"], 100.0);
+    EXPECT_EQ(report["topology"]["road_rail_crossings"]["at_grade_with_level_crossing_node"], 1);
+    EXPECT_EQ(report["topology"]["road_rail_crossings"]["grade_separated"], 1);
+    EXPECT_TRUE(report["topology"]["features_unattached"].empty());
+    EXPECT_TRUE(fs::exists(dir / "out" / "geometry.geojson"));
+
+    const auto est = run_railodd("convert " + quoted(osm) + " -o " + quoted(dir / "est") + " --estimate-cant");
+    ASSERT_EQ(est.exit_code, 0) << est.output;
+    const auto report2 = nlohmann::json::parse(read_file(dir / "est" / "report.json"));
+    EXPECT_GT(report2["cant"]["curves_with_estimated_cant"], 0);
+    EXPECT_EQ(report2["cant"]["max_cant_mm"], 160.0);
+    EXPECT_EQ(report2["vertical"]["sources"]["flat"], report2["geometry"]["summary"]["edges"]);
+}

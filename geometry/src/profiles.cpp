@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
+#include <optional>
 
 namespace railodd::geometry {
 
@@ -83,6 +85,61 @@ std::vector<VerticalProfile> fit_profiles(const TrackGraph& graph, const FittedN
         out.push_back(fit_vertical_profile(in, dem, ProfileOptions{}));
     }
     return out;
+}
+
+namespace {
+
+std::optional<double> number_tag(const ingest::Tags& tags, const char* key) {
+    const std::string v = ingest::tag_or(tags, key);
+    char* end = nullptr;
+    const double d = std::strtod(v.c_str(), &end);
+    return (!v.empty() && end != v.c_str()) ? std::optional<double>(d) : std::nullopt;
+}
+
+} // namespace
+
+std::vector<std::vector<CantStretch>> fit_cants(const TrackGraph& graph, const FittedNetwork& net,
+                                                const std::vector<ingest::Way>& ways, const CantOptions& options) {
+    std::map<std::int64_t, const ingest::Way*> by_id;
+    for (const auto& w : ways) {
+        by_id[w.id] = &w;
+    }
+    std::vector<std::vector<CantStretch>> out;
+    for (const auto& f : net.edges) {
+        const GraphEdge& e = graph.edges[f.edge];
+        const IndexedAlignment ia(f.alignment, 2.0);
+        std::vector<CantTagSpan> spans;
+        for (const auto& span : e.ways) {
+            const auto it = by_id.find(span.way_id);
+            if (it == by_id.end()) {
+                continue;
+            }
+            const auto& a = e.nodes[span.first].xy;
+            const auto& b = e.nodes[span.last].xy;
+            const double sa = ia.project(a.x, a.y).s, sb = ia.project(b.x, b.y).s;
+            // maxspeed is km/h unless it says otherwise; odd values are left to the ODD tagger.
+            spans.push_back({std::min(sa, sb), std::max(sa, sb), number_tag(it->second->tags, "railway:cant"),
+                             number_tag(it->second->tags, "maxspeed")});
+        }
+        std::sort(spans.begin(), spans.end(), [](const CantTagSpan& x, const CantTagSpan& y) { return x.s_start < y.s_start; });
+        out.push_back(compute_cant(f.alignment, spans, options));
+    }
+    return out;
+}
+
+nlohmann::ordered_json cants_report(const std::vector<std::vector<CantStretch>>& cants) {
+    std::size_t tagged = 0, estimated = 0;
+    double max_mm = 0.0;
+    for (const auto& track : cants) {
+        for (const auto& c : track) {
+            if (c.cant_start_m == c.cant_end_m && c.cant_start_m > 0) {
+                (c.estimated ? estimated : tagged) += 1;
+            }
+            max_mm = std::max({max_mm, c.cant_start_m * 1000, c.cant_end_m * 1000});
+        }
+    }
+    return {{"curves_with_tagged_cant", tagged}, {"curves_with_estimated_cant", estimated},
+            {"max_cant_mm", std::round(max_mm * 10) / 10}};
 }
 
 nlohmann::ordered_json profiles_report(const TrackGraph& graph, const std::vector<VerticalProfile>& profiles) {
