@@ -259,8 +259,8 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     }
     if (fine_report.max_m > 2.0) {
         // Nothing came within 2 m of every node: a denser, looser spline
-        // (knots at every node, kinks and curvature penalised a tenth as
-        // much) follows tight, kinked mapping and is still G2.
+        // (half the knot spacing, kink and curvature scales ten times wider)
+        // follows tight, kinked mapping and is still G2.
         FitOptions loose = o;
         loose.knot_spacing_m = 0.5 * o.knot_spacing_m;
         CurvatureModel dense = fine_spline(p, ends, loose);
