@@ -310,35 +310,6 @@ FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& poi
 
 namespace {
 
-// The primitives of `a` up to arc length s (the one containing s cut there)
-// and the pose at s. Cutting a line, arc or clothoid is exact.
-std::vector<Primitive> head_until(const Alignment& a, double s, Pose& at) {
-    std::vector<Primitive> head;
-    Pose p = a.start;
-    double done = 0.0;
-    for (const Primitive& prim : a.primitives) {
-        if (done + prim.length >= s) {
-            const double ds = s - done;
-            if (ds > 1e-9) {
-                Primitive cut = prim;
-                cut.length = ds;
-                cut.curv_end = prim.curv_start + (prim.curv_end - prim.curv_start) * ds / prim.length;
-                if (cut.kind == PrimitiveKind::spiral && cut.curv_end == cut.curv_start) {
-                    cut.kind = cut.curv_start == 0.0 ? PrimitiveKind::line : PrimitiveKind::arc;
-                }
-                head.push_back(cut);
-            }
-            at = evaluate(p, prim, ds);
-            return head;
-        }
-        head.push_back(prim);
-        p = evaluate(p, prim, prim.length);
-        done += prim.length;
-    }
-    at = p;
-    return head;
-}
-
 std::vector<Point2> without_repeats(const std::vector<Point>& in) {
     std::vector<Point2> out;
     for (const auto& p : in) {
@@ -398,10 +369,10 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
             ++k;
         }
         const double split = IndexedAlignment(a, 2.0).project(p[k].x, p[k].y).s;
-        Pose at;
-        const std::vector<Primitive> head = head_until(a, split, at);
+        const std::vector<Alignment> parts = split_alignment(a, {split});
+        const auto& head = parts.front().primitives;
         result.alignment.primitives.insert(result.alignment.primitives.end(), head.begin(), head.end());
-        window_start = at;
+        window_start = parts.back().start;
         i0 = k;
     }
     std::vector<Point> all;
