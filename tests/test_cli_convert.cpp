@@ -114,7 +114,7 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
                                " --no-timings --threads " + threads);
         ASSERT_EQ(r.exit_code, 0) << r.output;
     }
-    for (const char* name : {"report.json", "ingest.geojson"}) {
+    for (const char* name : {"report.json", "ingest.geojson", "geometry.geojson", "roads.geojson"}) {
         const std::string a = read_file(dir / "1" / name);
         EXPECT_FALSE(a.empty());
         EXPECT_EQ(a, read_file(dir / "2" / name)) << name;
