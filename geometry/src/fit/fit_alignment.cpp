@@ -257,8 +257,8 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
             return {std::move(m), r, false};
         }
     }
-    if (fine_report.max_m > 2.0) {
-        // Nothing came within 2 m of every node: a denser, looser spline
+    if (fine_report.max_m > 1.0) {
+        // Nothing came within 1 m of every node: a denser, looser spline
         // (half the knot spacing, kink and curvature scales ten times wider)
         // follows tight, kinked mapping and is still G2.
         FitOptions loose = o;
