@@ -11,10 +11,14 @@
 #include "railodd/util/errors.hpp"
 #include "railodd/util/output_stage.hpp"
 #include "railodd/util/phase_timer.hpp"
+#include "railodd/xodr/map_builder.hpp"
+#include "railodd/xodr/xml_writer.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <optional>
 #include <filesystem>
 #include <iostream>
@@ -50,6 +54,9 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--threads", opt_.threads, "Threads decoding PBF (default: libosmium's choice)");
     app->add_flag("--estimate-cant", opt_.estimate_cant,
                   "Estimate equilibrium cant from maxspeed and radius where railway:cant is not mapped (max 160 mm)");
+    app->add_option("--odr-version", opt_.odr_version, "OpenDRIVE revision of map.xodr: 1.6, 1.7 or 1.8")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"1.6", "1.7", "1.8"}));
     app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
     return app;
 }
@@ -124,22 +131,37 @@ struct Geometry {
     geometry::FittedNetwork fitted_tracks;
     std::vector<geometry::VerticalProfile> profiles;
     std::vector<std::vector<geometry::CantStretch>> cants;
-    nlohmann::ordered_json topology;
+    geometry::Attachment attachment;
+    geometry::Crossings crossings;
     geometry::TrackGraph roads;
     geometry::FittedNetwork fitted_roads;
 };
 
 // Crossings found on the graph; features placed on the fitted centrelines.
-nlohmann::ordered_json topology_of(const ingest::IngestResult& r, const Geometry& g, const ConvertOptions& o) {
+void place_features(const ingest::IngestResult& r, Geometry& g, const ConvertOptions& o) {
     std::vector<geometry::IndexedAlignment> alignments;
     alignments.reserve(g.fitted_tracks.edges.size());
     for (const auto& e : g.fitted_tracks.edges) {
         alignments.emplace_back(e.alignment, 2.0);
     }
-    const auto attachment =
-        geometry::attach_features(g.tracks, alignments, r.features, o.feature_distance_m, o.station_distance_m);
-    const auto crossings = geometry::find_crossings(g.tracks, r.tracks, r.roads, r.features);
-    return geometry::topology_report(crossings, attachment, r.features);
+    g.attachment = geometry::attach_features(g.tracks, alignments, r.features, o.feature_distance_m, o.station_distance_m);
+    g.crossings = geometry::find_crossings(g.tracks, r.tracks, r.roads, r.features);
+}
+
+// The input file's modification time, UTC: the map's date, stable across reruns.
+std::string input_date(const std::string& input) {
+    std::error_code ec;
+    const auto t = fs::last_write_time(input, ec);
+    if (ec) {
+        return {};
+    }
+    const auto sys = std::chrono::file_clock::to_sys(t);
+    const std::time_t tt = std::chrono::system_clock::to_time_t(sys);
+    std::tm tm{};
+    gmtime_r(&tt, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
 }
 
 Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files, double node_noise_m,
@@ -190,12 +212,23 @@ int ConvertCommand::run() {
     cant.estimate = opt_.estimate_cant;
     geo.cants = geometry::fit_cants(geo.tracks, geo.fitted_tracks, result.tracks, cant);
     timer.start("topology");
-    geo.topology = topology_of(result, geo, opt_);
+    place_features(result, geo, opt_);
+    // Phase 3: the OpenDRIVE map.
+    timer.start("opendrive");
+    const xodr::MapInput map_input{result, geo.tracks, geo.fitted_tracks, geo.profiles, geo.cants,
+                                   geo.roads, geo.fitted_roads, geo.attachment, geo.crossings};
+    xodr::MapOptions mo;
+    mo.revision = xodr::parse_revision(opt_.odr_version);
+    mo.name = fs::path(opt_.input).filename().string();
+    mo.date = input_date(opt_.input);
+    const xodr::MapBuild map = xodr::build_map(map_input, mo);
+    const std::string xodr_text = xodr::write_xodr(map.map, mo.revision);
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 
-    // Phase 3: stage every output, then move them into place together.
+    // Phase 4: stage every output, then move them into place together.
     OutputStage stage(opt_.outdir);
+    stage.write_text("map.xodr", xodr_text);
     stage.write_text("ingest.geojson", ingest::to_geojson(result));
     stage.write_text("geometry.geojson", geometry::to_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track"));
     stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));
@@ -203,7 +236,8 @@ int ConvertCommand::run() {
     report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
     report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
     report["cant"] = geometry::cants_report(geo.cants);
-    report["topology"] = geo.topology;
+    report["topology"] = geometry::topology_report(geo.crossings, geo.attachment, result.features);
+    report["opendrive"] = xodr::map_report(map, map_input);
     report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);

@@ -1,6 +1,6 @@
 #pragma once
-// railodd convert INPUT -o OUTDIR: ingest (and, in later stages, fit, tag and
-// write OpenDRIVE) for one route.
+// railodd convert INPUT -o OUTDIR: ingest, fit the geometry and write the
+// OpenDRIVE map of one route.
 #include "command.hpp"
 
 #include <cstdint>
@@ -25,6 +25,7 @@ struct ConvertOptions {
     unsigned threads = 0; // 0: libosmium's default pool size
     bool no_timings = false;
     bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
+    std::string odr_version = "1.7";
 };
 
 class ConvertCommand : public Command {

@@ -2,6 +2,7 @@
 #include "command.hpp"
 #include "convert_command.hpp"
 #include "sample_command.hpp"
+#include "validate_command.hpp"
 
 #include "railodd/util/errors.hpp"
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
     std::vector<std::unique_ptr<cli::Command>> commands;
     commands.push_back(std::make_unique<cli::ConvertCommand>());
     commands.push_back(std::make_unique<cli::SampleCommand>());
+    commands.push_back(std::make_unique<cli::ValidateCommand>());
     std::vector<CLI::App*> subs;
     for (auto& c : commands) {
         subs.push_back(c->add(app));

@@ -11,6 +11,7 @@ packages=(
   libpugixml-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   osmium-tool
+  libxml2-utils python3-xmlschema sumo sumo-tools
 )
 
 missing=()

@@ -40,6 +40,7 @@ enum ExitCode : int {
     exit_input = 2,
     exit_output = 3,
     exit_internal = 4,
+    exit_invalid = 5, // `railodd validate`: the checked file fails a check
 };
 
 } // namespace railodd

@@ -1,0 +1,87 @@
+// Entry points: read the document, evaluate every road's end poses once, run
+// the check passes in a fixed order, and order the findings errors first.
+#include "checks.hpp"
+
+#include "railodd/util/errors.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace railodd::xodr_check {
+
+std::size_t CheckResult::errors() const {
+    return static_cast<std::size_t>(std::count_if(findings.begin(), findings.end(),
+                                                  [](const Finding& f) { return f.severity == Severity::error; }));
+}
+
+std::size_t CheckResult::warnings() const { return findings.size() - errors(); }
+
+namespace {
+
+void evaluate_road_ends(Document& doc) {
+    for (Road& road : doc.roads) {
+        if (road.geometries.empty()) {
+            continue;
+        }
+        road.has_geometry = true;
+        road.start = evaluate(road.geometries.front(), 0.0);
+        const GeometryRecord& last = road.geometries.back();
+        road.end = evaluate(last, last.length);
+    }
+}
+
+void count_roads(const Document& doc, Summary& sum) {
+    sum.version = std::to_string(doc.rev_major) + "." + std::to_string(doc.rev_minor);
+    sum.roads = doc.roads.size();
+    sum.rail_roads = static_cast<std::size_t>(
+        std::count_if(doc.roads.begin(), doc.roads.end(), [](const Road& r) { return r.rail; }));
+}
+
+} // namespace
+
+CheckResult check_text(const std::string& xml, const std::string& name, const Limits& limits) {
+    Document doc = read_document(xml, name);
+    evaluate_road_ends(doc);
+    CheckResult result;
+    result.file = name;
+    result.findings = doc.findings;
+    count_roads(doc, result.summary);
+    if (doc.rev_major != 1 || doc.rev_minor < 6 || doc.rev_minor > 8) {
+        result.findings.push_back({Severity::warning, "file", name, nan, "version",
+                                   "OpenDRIVE " + result.summary.version +
+                                       ": the checks follow 1.6 to 1.8 and may not fit this revision"});
+    }
+    Context ctx(doc, limits, result);
+    check_plan_views(ctx);
+    check_elevations(ctx);
+    check_road_links(ctx);
+    check_junctions(ctx);
+    check_rail_extensions(ctx);
+    // Errors first so a truncated listing shows what failed; stable keeps the
+    // document order within each severity.
+    std::stable_sort(result.findings.begin(), result.findings.end(), [](const Finding& a, const Finding& b) {
+        return a.severity == Severity::error && b.severity != Severity::error;
+    });
+    return result;
+}
+
+CheckResult check_file(const std::filesystem::path& file, const Limits& limits) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) {
+        throw InputError(file.string(), std::filesystem::exists(file, ec) ? "not a regular file" : "no such file");
+    }
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw InputError(file.string(), "cannot be opened for reading");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) {
+        throw InputError(file.string(), "read error");
+    }
+    return check_text(text.str(), file.string(), limits);
+}
+
+} // namespace railodd::xodr_check

@@ -1,0 +1,52 @@
+#pragma once
+// Assembles the whole OpenDRIVE map from the geometry stage's results: the
+// rail network, the corridor's roads, the railway features on them (signals,
+// tunnels, bridges, stations with platforms, level crossings) and the header.
+#include "railodd/geometry/crossings.hpp"
+#include "railodd/geometry/feature_attachment.hpp"
+#include "railodd/xodr/rail_network.hpp"
+#include "railodd/xodr/road_network.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace railodd::xodr {
+
+struct MapInput {
+    const ingest::IngestResult& ingest;
+    const geometry::TrackGraph& tracks;
+    const geometry::FittedNetwork& fitted_tracks;
+    const std::vector<geometry::VerticalProfile>& profiles;
+    const std::vector<std::vector<geometry::CantStretch>>& cants;
+    const geometry::TrackGraph& roads;
+    const geometry::FittedNetwork& fitted_roads;
+    const geometry::Attachment& attachment;
+    const geometry::Crossings& crossings;
+};
+
+struct MapOptions {
+    Revision revision = Revision::v1_7;
+    std::string name;
+    std::string date; // header date; the caller fixes it (e.g. from the input file) for reproducible output
+    RailOptions rail;
+    RoadNetworkOptions roads;
+};
+
+// What was written where, for report.json and for the ODD tagger.
+struct MapBuild {
+    Map map;
+    RailNetwork rail;
+    std::vector<BuiltRoad> roads;
+    std::size_t signals = 0;
+    std::size_t structures = 0;
+    std::size_t stations = 0;
+    std::size_t platforms = 0;
+    std::size_t level_crossings = 0;
+    std::vector<std::pair<std::size_t, std::string>> features_not_written; // feature index, reason
+};
+
+MapBuild build_map(const MapInput& input, const MapOptions& options);
+
+// report.json's "opendrive" section.
+nlohmann::ordered_json map_report(const MapBuild& build, const MapInput& input);
+
+} // namespace railodd::xodr

@@ -1,0 +1,13 @@
+#pragma once
+// Serializes the map as ASAM OpenDRIVE 1.6, 1.7 or 1.8 XML. Numbers are
+// written with 15 significant digits through std::to_chars, so the output is
+// byte-identical for identical maps and locale-independent.
+#include "railodd/xodr/model.hpp"
+
+#include <string>
+
+namespace railodd::xodr {
+
+std::string write_xodr(const Map& map, Revision revision);
+
+} // namespace railodd::xodr

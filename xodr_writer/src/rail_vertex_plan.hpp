@@ -1,0 +1,43 @@
+#pragma once
+// How the edge ends at each track-graph vertex are joined in OpenDRIVE:
+// which pairs of ends a train can pass between (movements: the ends meet
+// with opposite headings and matching curvature, i.e. G2), and, at vertices
+// with more than two ends, which ends are cut back to become a junction's
+// connecting roads.
+#include "railodd/geometry/track_fit.hpp"
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace railodd::xodr {
+
+struct Leg {
+    std::size_t edge = 0;
+    bool at_start = false; // the edge's alignment starts at the vertex
+    geometry::Pose out;    // pose leaving the vertex along the edge
+};
+
+struct VertexPlan {
+    std::size_t vertex = 0;
+    std::vector<Leg> legs;
+    bool junction = false; // more than two ends: movements run through connecting roads
+    // Leg index pairs; in a junction (uncut leg, cut leg), otherwise the two
+    // legs of a direct link.
+    std::vector<std::pair<std::size_t, std::size_t>> movements;
+    std::vector<bool> cut;                                   // per leg
+    std::vector<std::pair<std::size_t, std::string>> unlinked; // leg index, why no train passes there
+};
+
+struct PlanTolerances {
+    double gap_m = 1e-3;
+    double heading_rad = 1e-6;
+    double curvature = 1e-6;
+};
+
+// One plan per vertex with at least two ends of written edges (written[e]).
+std::vector<VertexPlan> plan_vertices(const geometry::TrackGraph& graph, const geometry::FittedNetwork& fitted,
+                                      const std::vector<bool>& written, const PlanTolerances& tolerances = {});
+
+} // namespace railodd::xodr
