@@ -7,7 +7,8 @@ bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/railodd sample -o out/sample
 ./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif
+./build/railodd validate out/sample_route/map.xodr --netconvert
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
-echo "  conversion (report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
+echo "  conversion (map.xodr, report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"

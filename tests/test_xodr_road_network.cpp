@@ -644,3 +644,27 @@ TEST(RoadNetwork, NonMotorJunctionWithoutMovementsIsNoJunction) {
     }
     EXPECT_NEAR(total, 560.0, 1e-6); // nothing cut
 }
+
+TEST(RoadNetwork, JunctionWhoseCutEndsHaveNoMovementIsUndone) {
+    // Footways whose last 2 m before node 100 are mapped as residential: at
+    // the node west and east could be driven through, but the cut ends are
+    // footway, so no connecting road can be built and nothing is cut.
+    const ingest::Tags foot{{"highway", "footway"}};
+    const std::vector<ingest::Way> ways{
+        way(1, foot, {node(1, -200, 0), node(11, -2, 0)}),
+        way(2, residential, {node(11, -2, 0), node(100, 0, 0)}),
+        way(3, residential, {node(100, 0, 0), node(12, 2, 0)}),
+        way(4, foot, {node(12, 2, 0), node(5, 200, 0)}),
+        way(5, foot, {node(100, 0, 0), node(7, 0, 160)}),
+    };
+    const Built b = build(ways);
+    EXPECT_TRUE(b.map.junctions.empty());
+    EXPECT_EQ(check_network(b, ways), 0u);
+    double total = 0.0;
+    for (const auto& r : b.map.roads) {
+        total += r.length();
+        EXPECT_EQ(r.predecessor.type, ElementType::none);
+        EXPECT_EQ(r.successor.type, ElementType::none);
+    }
+    EXPECT_NEAR(total, 560.0, 1e-6);
+}

@@ -16,6 +16,7 @@ namespace railodd::xodr {
 namespace {
 
 constexpr double approach_m = 5.0; // road signals / barriers this far before the track axis
+constexpr double on_road_m = 1.0;  // the crossing point lies on a road's reference line within this
 
 struct RoadHit {
     const BuiltRoad* road = nullptr;
@@ -30,7 +31,8 @@ RoadHit find_road(const FeatureContext& ctx, std::int64_t way_id, const ingest::
             continue;
         }
         const auto pr = geometry::project_point(br.alignment, p.x, p.y);
-        if (pr.distance < best_d) {
+        // Past a cut-back end the projection clamps to the end: not on this road.
+        if (pr.distance < best_d && pr.distance < on_road_m) {
             best_d = pr.distance;
             best = {&br, pr.s};
         }
@@ -119,10 +121,10 @@ void add_level_crossings(FeatureContext& ctx) {
         }
         const geometry::IndexedAlignment ia(ctx.in.fitted_tracks.edges[c.edge].alignment, 2.0);
         const auto loc = ctx.on_track(c.edge, ia.project(c.point.x, c.point.y).s);
-        const RoadHit hit = find_road(ctx, c.road_way_id, c.point);
-        if (!loc || !hit.road) {
-            continue; // counted in the report from the crossings the geometry stage found
+        if (!loc) {
+            continue; // the track was not written: listed in tracks_not_written
         }
+        const RoadHit hit = find_road(ctx, c.road_way_id, c.point);
         std::vector<UserData> trace{{"osm", "way:" + std::to_string(c.road_way_id) +
                                                 (c.level_crossing_node ? ",node:" + std::to_string(c.level_crossing_node) : "")}};
         Road& track = ctx.build.map.roads[loc->road];
@@ -134,6 +136,14 @@ void add_level_crossings(FeatureContext& ctx) {
         sg.type = "level_crossing";
         sg.user_data = trace;
         track.signals.push_back(std::move(sg));
+        ++ctx.build.level_crossings;
+        if (!hit.road) {
+            // The crossing lies where the road was cut back for a junction of
+            // roads: its connecting roads fan out there, none is "the" road.
+            ctx.build.level_crossings_without_road.push_back(
+                {c.road_way_id, c.level_crossing_node, "inside a road junction: road-side signals not placed"});
+            continue;
+        }
         Road& road = ctx.build.map.roads.at(static_cast<std::size_t>(
             &road_by_id(ctx.build.map, hit.road->road_id) - ctx.build.map.roads.data()));
         add_road_side(ctx, road, hit.s, c, trace);
@@ -150,7 +160,6 @@ void add_level_crossings(FeatureContext& ctx) {
             j.user_data = trace;
             ctx.build.map.junctions.push_back(std::move(j));
         }
-        ++ctx.build.level_crossings;
     }
 }
 

@@ -81,6 +81,11 @@ nlohmann::ordered_json map_report(const MapBuild& b, const MapInput& in) {
     r["stations"] = b.stations;
     r["platforms"] = b.platforms;
     r["level_crossings"] = b.level_crossings;
+    nlohmann::ordered_json no_road = nlohmann::ordered_json::array();
+    for (const auto& m : b.level_crossings_without_road) {
+        no_road.push_back({{"road_way", m.road_way}, {"node", m.node}, {"reason", m.reason}});
+    }
+    r["level_crossings_without_road_side"] = no_road;
     nlohmann::ordered_json unwritten = nlohmann::ordered_json::array();
     for (const auto& u : b.rail.unwritten) {
         const auto& e = in.tracks.edges[u.edge];

@@ -218,6 +218,7 @@ private:
     std::map<std::size_t, EdgeSource> sources_;
     std::vector<double> d_start_, d_end_;
     std::vector<std::size_t> main_; // main road index per edge
+    std::map<std::size_t, std::size_t> switches_at_; // vertex -> switches written there
 };
 
 void RailBuilder::add_junction(const VertexPlan& plan) {
@@ -297,7 +298,9 @@ void RailBuilder::add_switch(const VertexPlan& plan, std::size_t stem, const std
     const auto& vertex = in_.graph.vertices[plan.vertex];
     Switch sw;
     sw.id = ids_.other();
-    sw.name = "switch " + std::to_string(vertex.node_id);
+    // A vertex with two stems (a double slip) has two switches; names are unique.
+    const std::size_t before = switches_at_[plan.vertex]++;
+    sw.name = "switch " + std::to_string(vertex.node_id) + (before ? "/" + std::to_string(before + 1) : "");
     sw.main_track = ref(legs[0]);
     sw.side_track = ref(legs[1]);
     sw.user_data.push_back({"osm", "node:" + std::to_string(vertex.node_id)});

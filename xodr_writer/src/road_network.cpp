@@ -16,6 +16,7 @@
 #include "road_lanes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -109,14 +110,15 @@ bool same_lanes(const LaneSection& a, const LaneSection& b) {
     return same_lanes(a.left, b.left) && same_lanes(a.right, b.right);
 }
 
-Lane* find_lane(LaneSection& s, int id) {
+template <class Section> // LaneSection or const LaneSection
+auto* find_lane(Section& s, int id) {
     auto& side = id > 0 ? s.left : s.right;
     for (auto& l : side) {
         if (l.id == id) {
             return &l;
         }
     }
-    return nullptr;
+    return static_cast<decltype(&side[0])>(nullptr);
 }
 
 // The section touching a leg's node.
@@ -308,6 +310,45 @@ Pose leg_pose(const EdgeRoad& r, bool at_end, bool into_node) {
     return p;
 }
 
+struct Movement {
+    Leg in, out;
+    std::vector<int> in_lanes, out_lanes; // paired, innermost first
+    Pose from, to;
+};
+
+// Every buildable movement through a junction node, on the cut roads: ordered
+// pairs of distinct legs (no U-turns) with driving lanes entering through the
+// first and leaving through the second, whose cut ends are apart.
+std::vector<Movement> movements_of(const Node& node, const std::vector<EdgeRoad>& rs) {
+    std::vector<Movement> out;
+    for (const Leg& in : node.legs) {
+        const EdgeRoad& rin = rs[in.edge];
+        const std::vector<int> in_lanes = lanes_in(end_section(rin.kept_sections, in.at_end), in.at_end);
+        if (in_lanes.empty()) {
+            continue;
+        }
+        for (const Leg& to : node.legs) {
+            if (to.edge == in.edge && to.at_end == in.at_end) {
+                continue;
+            }
+            const EdgeRoad& rout = rs[to.edge];
+            std::vector<int> out_lanes = lanes_out(end_section(rout.kept_sections, to.at_end), to.at_end);
+            const std::size_t n = std::min(in_lanes.size(), out_lanes.size());
+            if (n == 0) {
+                continue;
+            }
+            Movement m{in, to, {in_lanes.begin(), in_lanes.begin() + static_cast<std::ptrdiff_t>(n)},
+                       {out_lanes.begin(), out_lanes.begin() + static_cast<std::ptrdiff_t>(n)},
+                       leg_pose(rin, in.at_end, true), leg_pose(rout, to.at_end, false)};
+            if (std::hypot(m.to.x - m.from.x, m.to.y - m.from.y) < min_connection_m) {
+                continue;
+            }
+            out.push_back(std::move(m));
+        }
+    }
+    return out;
+}
+
 // Direction from the node along a leg: the chord to a point a little way
 // along (the first segment of a mapped way is often too short to trust).
 double leg_direction(const EdgeRoad& r, bool at_end) {
@@ -439,12 +480,7 @@ std::vector<BuiltRoad> add_road_network(const geometry::TrackGraph& graph, const
         }
     }
 
-    // Roads, in edge order.
-    for (auto& r : rs) {
-        if (r.folded) {
-            continue;
-        }
-        r.id = ids.road();
+    const auto cut_road = [](EdgeRoad& r) {
         std::vector<double> cuts;
         if (r.cut[0] > 0.0) {
             cuts.push_back(r.cut[0]);
@@ -456,6 +492,37 @@ std::vector<BuiltRoad> add_road_network(const geometry::TrackGraph& graph, const
         r.kept = pieces[r.cut[0] > 0.0 ? 1 : 0];
         r.kept_length = geometry::length(r.kept);
         r.kept_sections = cut_sections(r.sections, r.cut[0], r.kept_length);
+    };
+    for (auto& r : rs) {
+        if (!r.folded) {
+            cut_road(r);
+        }
+    }
+    // A cut can pass a way boundary, so the lanes at a leg's cut end may not
+    // be those at the node (a road turning into a footway just before it). A
+    // junction left without a movement is no junction: its legs are restored
+    // and stay unlinked. (Restoring one end changes nothing at the other.) A
+    // junction holding folded edges stays one, with its legs uncut: they had
+    // a movement at the node.
+    for (auto& [root, node] : nodes) {
+        if (node.kind != Node::Kind::junction || !movements_of(node, rs).empty()) {
+            continue;
+        }
+        if (node.folded.empty()) {
+            node.kind = Node::Kind::none;
+        }
+        for (const Leg& leg : node.legs) {
+            rs[leg.edge].cut[leg.at_end ? 1 : 0] = 0.0;
+        }
+        for (const Leg& leg : node.legs) {
+            cut_road(rs[leg.edge]);
+        }
+    }
+    // Road ids, in edge order.
+    for (auto& r : rs) {
+        if (!r.folded) {
+            r.id = ids.road();
+        }
     }
 
     // Links and junctions, in node order.
@@ -508,60 +575,38 @@ std::vector<BuiltRoad> add_road_network(const geometry::TrackGraph& graph, const
             (leg.at_end ? rs[leg.edge].successor : rs[leg.edge].predecessor) = {ElementType::junction, j.id,
                                                                                   Contact::start};
         }
-        for (const Leg& in : node.legs) {
-            const EdgeRoad& rin = rs[in.edge];
-            const std::vector<int> in_lanes = lanes_in(end_section(rin.kept_sections, in.at_end), in.at_end);
-            if (in_lanes.empty()) {
-                continue;
+        for (const Movement& m : movements_of(node, rs)) {
+            const EdgeRoad& rin = rs[m.in.edge];
+            const EdgeRoad& rout = rs[m.out.edge];
+            Road c;
+            c.id = ids.road();
+            c.junction = j.id;
+            c.rule = "RHT";
+            c.type = rin.road_type;
+            c.predecessor = {ElementType::road, rin.id, m.in.at_end ? Contact::end : Contact::start};
+            c.successor = {ElementType::road, rout.id, m.out.at_end ? Contact::end : Contact::start};
+            c.plan_view.push_back(roads::connecting_geometry(m.from, m.to));
+            const LaneSection& in_sec = end_section(rin.kept_sections, m.in.at_end);
+            Connection conn;
+            conn.id = ids.other();
+            conn.incoming_road = rin.id;
+            conn.connecting_road = c.id;
+            conn.contact = Contact::start;
+            LaneSection sec;
+            for (std::size_t q = 0; q < m.in_lanes.size(); ++q) {
+                Lane l;
+                l.id = -static_cast<int>(q + 1);
+                l.type = "driving";
+                l.width = find_lane(in_sec, m.in_lanes[q])->width;
+                l.link.predecessor = m.in_lanes[q];
+                l.link.successor = m.out_lanes[q];
+                sec.right.push_back(l);
+                conn.lane_links.push_back({m.in_lanes[q], l.id});
             }
-            for (const Leg& out : node.legs) {
-                if (out.edge == in.edge && out.at_end == in.at_end) {
-                    continue; // no U-turns
-                }
-                const EdgeRoad& rout = rs[out.edge];
-                const std::vector<int> out_lanes = lanes_out(end_section(rout.kept_sections, out.at_end), out.at_end);
-                const std::size_t n = std::min(in_lanes.size(), out_lanes.size());
-                if (n == 0) {
-                    continue;
-                }
-                const Pose from = leg_pose(rin, in.at_end, true);
-                const Pose to = leg_pose(rout, out.at_end, false);
-                if (std::hypot(to.x - from.x, to.y - from.y) < min_connection_m) {
-                    continue;
-                }
-                Road c;
-                c.id = ids.road();
-                c.junction = j.id;
-                c.rule = "RHT";
-                c.type = rin.road_type;
-                c.predecessor = {ElementType::road, rin.id, in.at_end ? Contact::end : Contact::start};
-                c.successor = {ElementType::road, rout.id, out.at_end ? Contact::end : Contact::start};
-                c.plan_view.push_back(roads::connecting_geometry(from, to));
-                LaneSection sec;
-                const LaneSection& in_sec = end_section(rin.kept_sections, in.at_end);
-                Connection conn;
-                conn.id = ids.other();
-                conn.incoming_road = rin.id;
-                conn.connecting_road = c.id;
-                conn.contact = Contact::start;
-                for (std::size_t q = 0; q < n; ++q) {
-                    Lane l;
-                    l.id = -static_cast<int>(q + 1);
-                    l.type = "driving";
-                    const LaneSection& s = in_sec;
-                    const std::vector<Lane>& side = in_lanes[q] > 0 ? s.left : s.right;
-                    const auto it = std::find_if(side.begin(), side.end(), [&](const Lane& x) { return x.id == in_lanes[q]; });
-                    l.width = it != side.end() ? it->width : 3.0;
-                    l.link.predecessor = in_lanes[q];
-                    l.link.successor = out_lanes[q];
-                    sec.right.push_back(l);
-                    conn.lane_links.push_back({in_lanes[q], l.id});
-                }
-                c.lane_sections.push_back(sec);
-                c.user_data.push_back({"osm", osm});
-                connecting.push_back(std::move(c));
-                j.connections.push_back(std::move(conn));
-            }
+            c.lane_sections.push_back(sec);
+            c.user_data.push_back({"osm", osm});
+            connecting.push_back(std::move(c));
+            j.connections.push_back(std::move(conn));
         }
         junctions.push_back(std::move(j));
     }

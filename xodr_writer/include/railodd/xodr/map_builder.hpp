@@ -41,6 +41,12 @@ struct MapBuild {
     std::size_t stations = 0;
     std::size_t platforms = 0;
     std::size_t level_crossings = 0;
+    struct MissingRoadSide {
+        std::int64_t road_way = 0;
+        std::int64_t node = 0;
+        std::string reason;
+    };
+    std::vector<MissingRoadSide> level_crossings_without_road; // track side written, road side not
     std::vector<std::pair<std::size_t, std::string>> features_not_written; // feature index, reason
 };
 
