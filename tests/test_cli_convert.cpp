@@ -114,7 +114,7 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
                                " --no-timings --threads " + threads);
         ASSERT_EQ(r.exit_code, 0) << r.output;
     }
-    for (const char* name : {"report.json", "ingest.geojson", "geometry.geojson", "roads.geojson"}) {
+    for (const char* name : {"map.xodr", "report.json", "ingest.geojson", "geometry.geojson", "roads.geojson"}) {
         const std::string a = read_file(dir / "1" / name);
         EXPECT_FALSE(a.empty());
         EXPECT_EQ(a, read_file(dir / "2" / name)) << name;
@@ -132,7 +132,7 @@ TEST(CliConvert, SampleRouteGeometrySections) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
     EXPECT_EQ(report["geometry"]["summary"]["switch_vertices"], 3);
-    EXPECT_EQ(report["geometry"]["summary"]["links"]["g1_fallback_chains"], 0);
+    EXPECT_EQ(report["geometry"]["summary"]["links"]["corner_chains"], 0);
     EXPECT_EQ(report["vertical"]["sources"]["dem"], report["geometry"]["summary"]["edges"]);
     EXPECT_EQ(report["cant"]["curves_with_tagged_cant"], 1);
     EXPECT_EQ(report["cant"]["max_cant_mm"], 100.0);

@@ -80,3 +80,35 @@ INSTANTIATE_TEST_SUITE_P(
         }
         return n;
     });
+
+// The embedded sample route (made by railodd itself) in every revision.
+class XodrSampleRouteMap : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(XodrSampleRouteMap, ValidatesAndImports) {
+    RAILODD_REQUIRE_SHARED_DATA(); // the ASAM schemas
+    if (!have("xmllint") || !have("netconvert")) {
+        GTEST_SKIP() << "xmllint or netconvert missing (scripts/install-deps.sh installs them)";
+    }
+    const fs::path dir = scratch_dir() / (std::string{"sample-"} + GetParam());
+    ASSERT_EQ(run_railodd("sample -o " + quoted(dir / "in")).exit_code, 0);
+    const auto conv = run_railodd("convert " + quoted(dir / "in" / "sample_route.osm") + " --dem " +
+                                  quoted(dir / "in" / "sample_route_dem.tif") + " -o " + quoted(dir / "out") +
+                                  " --no-timings --estimate-cant --odr-version " + GetParam());
+    ASSERT_EQ(conv.exit_code, 0) << conv.output;
+    const auto val = run_railodd("validate " + quoted(dir / "out" / "map.xodr") + " --xsd-dir " +
+                                 quoted(fs::canonical(shared_data() / "schemas")) + " --netconvert --json");
+    const auto v = nlohmann::json::parse(val.output.substr(val.output.find('{')));
+    EXPECT_EQ(val.exit_code, 0) << val.output.substr(0, 3000);
+    EXPECT_EQ(v["summary"]["switches"], 3);
+    EXPECT_EQ(v["summary"]["stations"], 2);
+    const auto report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
+    EXPECT_EQ(report["opendrive"]["level_crossings"], 1);
+    EXPECT_EQ(report["opendrive"]["tunnels_and_bridges"], 2);
+    EXPECT_EQ(v["netconvert"]["rail_edges"].get<int>(),
+              report["opendrive"]["rail_roads"].get<int>() - report["opendrive"]["rail_connecting_roads"].get<int>());
+}
+
+INSTANTIATE_TEST_SUITE_P(Revisions, XodrSampleRouteMap, ::testing::Values("1.6", "1.7", "1.8"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                             return std::string{"v"} + (info.param[2] == '6' ? "16" : info.param[2] == '7' ? "17" : "18");
+                         });
