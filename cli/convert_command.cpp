@@ -13,6 +13,9 @@
 #include "railodd/util/phase_timer.hpp"
 #include "railodd/xodr/map_builder.hpp"
 #include "railodd/xodr/xml_writer.hpp"
+#include "railodd/odd/profile_outputs.hpp"
+#include "railodd/odd/tagger.hpp"
+#include "railodd/odd/taxonomy.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -57,6 +60,7 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--odr-version", opt_.odr_version, "OpenDRIVE revision of map.xodr: 1.6, 1.7 or 1.8")
         ->capture_default_str()
         ->check(CLI::IsMember({"1.6", "1.7", "1.8"}));
+    app->add_option("--taxonomy", opt_.taxonomy, "ODD taxonomy for odd_profile.* (default: data/odd/railway_odd.yaml)");
     app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
     return app;
 }
@@ -148,6 +152,11 @@ void place_features(const ingest::IngestResult& r, Geometry& g, const ConvertOpt
     g.crossings = geometry::find_crossings(g.tracks, r.tracks, r.roads, r.features);
 }
 
+std::filesystem::path taxonomy_path(const std::string& option) {
+    return option.empty() ? std::filesystem::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml"
+                          : std::filesystem::path{option};
+}
+
 // The input file's modification time, UTC: the map's date, stable across reruns.
 std::string input_date(const std::string& input) {
     std::error_code ec;
@@ -221,14 +230,23 @@ int ConvertCommand::run() {
     mo.revision = xodr::parse_revision(opt_.odr_version);
     mo.name = fs::path(opt_.input).filename().string();
     mo.date = input_date(opt_.input);
-    const xodr::MapBuild map = xodr::build_map(map_input, mo);
+    xodr::MapBuild map = xodr::build_map(map_input, mo);
+    // Phase 4: ODD tags on every stretch and point of track, also carried
+    // into the map's <userData>.
+    timer.start("odd_tagging");
+    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
+    const odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
+    odd::add_odd_user_data(profile, map.map);
     const std::string xodr_text = xodr::write_xodr(map.map, mo.revision);
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 
-    // Phase 4: stage every output, then move them into place together.
+    // Phase 5: stage every output, then move them into place together.
     OutputStage stage(opt_.outdir);
     stage.write_text("map.xodr", xodr_text);
+    stage.write_text("odd_profile.json", odd::to_json(profile).dump(1) + "\n");
+    stage.write_text("odd_profile.geojson", odd::to_geojson(profile));
+    stage.write_text("odd_profile.csv", odd::to_csv(profile));
     stage.write_text("ingest.geojson", ingest::to_geojson(result));
     stage.write_text("geometry.geojson", geometry::to_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track"));
     stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));

@@ -26,6 +26,7 @@ struct ConvertOptions {
     bool no_timings = false;
     bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
     std::string odr_version = "1.7";
+    std::string taxonomy; // ODD taxonomy; empty: data/odd/railway_odd.yaml
 };
 
 class ConvertCommand : public Command {

@@ -1,0 +1,76 @@
+#pragma once
+// A route's ODD profile: every stretch and point of track tagged with the
+// taxonomy element it belongs to, its attributes and the sources behind it.
+// Written by `railodd convert` as odd_profile.json / .geojson / .csv and read
+// back by `railodd profile` (docs/odd.md, "Profile").
+//
+// odd_profile.json:
+//   {"railodd": {...}, "taxonomy": {"name", "version", "file"},
+//    "route": {"description", "length_m", "tracks"},
+//    "elements": [{"odd_element": PATH, "id": TAXONOMY-ID, "attributes": {NAME: number|string|bool, ...},
+//                  "road_id": "12", "s_start": m, "s_end": m, "track": EDGE, "chainage_start": m,
+//                  "chainage_end": m, "point": bool, "osm_ids": ["way:1", "node:2"],
+//                  "source": "osm"|"derived"|"dem"|"osm+derived"}, ...],
+//    "unparsed": [{"osm_ids", "tag", "value", "reason"}],
+//    "summary": {...}}
+// s is along the OpenDRIVE road `road_id`; chainage along the route (the track
+// graph edge `track`'s fitted centreline when no route is chosen).
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace railodd::odd {
+
+using AttributeValue = std::variant<double, std::string, bool>;
+
+struct TaggedAttribute {
+    std::string name;
+    AttributeValue value;
+};
+
+struct TaggedElement {
+    std::string element;    // taxonomy path
+    std::string element_id; // taxonomy id
+    std::vector<TaggedAttribute> attributes;
+    std::string road_id;
+    double s_start = 0.0;
+    double s_end = 0.0;
+    std::size_t track = 0;
+    double chainage_start = 0.0;
+    double chainage_end = 0.0;
+    bool point = false;
+    std::vector<std::string> osm_ids;
+    std::string source;
+    std::vector<std::pair<double, double>> lonlat; // geometry for the GeoJSON: a point or the stretch sampled
+
+    const AttributeValue* find(const std::string& attribute) const;
+};
+
+struct Unparsed {
+    std::vector<std::string> osm_ids;
+    std::string tag;
+    std::string value;
+    std::string reason;
+};
+
+struct OddProfile {
+    std::string taxonomy_name;
+    std::string taxonomy_version;
+    std::string taxonomy_file;
+    std::string route;     // description of the route / selection
+    double length_m = 0.0; // of all tracks (or the route)
+    std::size_t tracks = 0;
+    std::vector<TaggedElement> elements; // by track, then chainage, then element path
+    std::vector<Unparsed> unparsed;
+    nlohmann::ordered_json summary;      // km per radius / gradient class, counts, speed profile
+};
+
+nlohmann::ordered_json to_json(const OddProfile& profile);
+OddProfile profile_from_json(const nlohmann::json& j); // throws std::invalid_argument naming the missing key
+OddProfile read_profile(const std::filesystem::path& file); // throws railodd::InputError naming the file
+
+} // namespace railodd::odd

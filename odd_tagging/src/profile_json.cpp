@@ -1,0 +1,207 @@
+// odd_profile.json: writing and reading the route's ODD profile (profile.hpp
+// holds the format). Keys are written in a fixed order (ordered_json) and
+// elements in the profile's order, so that two runs give identical files.
+// `lonlat` is not part of the JSON: the geometry lives in odd_profile.geojson.
+#include "railodd/odd/profile.hpp"
+
+#include "railodd/util/errors.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace railodd::odd {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// Bumped when a key changes meaning; readers refuse nothing yet (one version).
+constexpr int format_version = 1;
+
+ojson attribute_json(const AttributeValue& value) {
+    return std::visit([](const auto& v) { return ojson(v); }, value);
+}
+
+ojson element_json(const TaggedElement& e) {
+    ojson attrs = ojson::object();
+    for (const auto& a : e.attributes) {
+        attrs[a.name] = attribute_json(a.value);
+    }
+    ojson j;
+    j["odd_element"] = e.element;
+    j["id"] = e.element_id;
+    j["attributes"] = std::move(attrs);
+    j["road_id"] = e.road_id;
+    j["s_start"] = e.s_start;
+    j["s_end"] = e.s_end;
+    j["track"] = e.track;
+    j["chainage_start"] = e.chainage_start;
+    j["chainage_end"] = e.chainage_end;
+    j["point"] = e.point;
+    j["osm_ids"] = e.osm_ids;
+    j["source"] = e.source;
+    return j;
+}
+
+// --- reading ---------------------------------------------------------------
+// Every lookup names the key and where it was expected, so that a hand-edited
+// file that lost a key is reported as "elements[3].s_start: missing".
+
+const nlohmann::json& required(const nlohmann::json& j, const std::string& key, const std::string& where) {
+    if (!j.is_object()) {
+        throw std::invalid_argument(where + ": expected an object");
+    }
+    const auto it = j.find(key);
+    if (it == j.end()) {
+        throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": missing");
+    }
+    return *it;
+}
+
+template <class T>
+T get(const nlohmann::json& j, const std::string& key, const std::string& where) {
+    const auto& v = required(j, key, where);
+    try {
+        return v.get<T>();
+    } catch (const nlohmann::json::exception&) {
+        throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": wrong type (" + v.type_name() + ")");
+    }
+}
+
+template <class T>
+T get_or(const nlohmann::json& j, const std::string& key, const std::string& where, T fallback) {
+    return j.contains(key) ? get<T>(j, key, where) : fallback;
+}
+
+AttributeValue attribute_value(const nlohmann::json& v, const std::string& where) {
+    if (v.is_boolean()) {
+        return v.get<bool>();
+    }
+    if (v.is_number()) {
+        return v.get<double>();
+    }
+    if (v.is_string()) {
+        return v.get<std::string>();
+    }
+    throw std::invalid_argument(where + ": expected a number, string or bool (" + v.type_name() + ")");
+}
+
+TaggedElement element_from_json(const nlohmann::json& j, const std::string& where) {
+    TaggedElement e;
+    e.element = get<std::string>(j, "odd_element", where);
+    e.element_id = get_or<std::string>(j, "id", where, "");
+    if (j.contains("attributes")) {
+        const auto& attrs = required(j, "attributes", where);
+        if (!attrs.is_object()) {
+            throw std::invalid_argument(where + ".attributes: expected an object");
+        }
+        for (const auto& [name, value] : attrs.items()) {
+            e.attributes.push_back({name, attribute_value(value, where + ".attributes." + name)});
+        }
+    }
+    e.road_id = get<std::string>(j, "road_id", where);
+    e.s_start = get<double>(j, "s_start", where);
+    e.s_end = get<double>(j, "s_end", where);
+    e.track = get_or<std::size_t>(j, "track", where, 0);
+    e.chainage_start = get_or<double>(j, "chainage_start", where, e.s_start);
+    e.chainage_end = get_or<double>(j, "chainage_end", where, e.s_end);
+    e.point = get_or<bool>(j, "point", where, false);
+    e.osm_ids = get_or<std::vector<std::string>>(j, "osm_ids", where, {});
+    e.source = get_or<std::string>(j, "source", where, "");
+    return e;
+}
+
+} // namespace
+
+const AttributeValue* TaggedElement::find(const std::string& attribute) const {
+    for (const auto& a : attributes) {
+        if (a.name == attribute) {
+            return &a.value;
+        }
+    }
+    return nullptr;
+}
+
+nlohmann::ordered_json to_json(const OddProfile& profile) {
+    ojson j;
+    j["railodd"] = {{"format", "odd_profile"}, {"format_version", format_version}};
+    j["taxonomy"] = {{"name", profile.taxonomy_name},
+                     {"version", profile.taxonomy_version},
+                     {"file", profile.taxonomy_file}};
+    j["route"] = {{"description", profile.route}, {"length_m", profile.length_m}, {"tracks", profile.tracks}};
+    ojson elements = ojson::array();
+    for (const auto& e : profile.elements) {
+        elements.push_back(element_json(e));
+    }
+    j["elements"] = std::move(elements);
+    ojson unparsed = ojson::array();
+    for (const auto& u : profile.unparsed) {
+        unparsed.push_back({{"osm_ids", u.osm_ids}, {"tag", u.tag}, {"value", u.value}, {"reason", u.reason}});
+    }
+    j["unparsed"] = std::move(unparsed);
+    j["summary"] = profile.summary.is_null() ? ojson::object() : profile.summary;
+    return j;
+}
+
+OddProfile profile_from_json(const nlohmann::json& j) {
+    OddProfile p;
+    const auto& taxonomy = required(j, "taxonomy", "");
+    p.taxonomy_name = get_or<std::string>(taxonomy, "name", "taxonomy", "");
+    p.taxonomy_version = get_or<std::string>(taxonomy, "version", "taxonomy", "");
+    p.taxonomy_file = get_or<std::string>(taxonomy, "file", "taxonomy", "");
+    const auto& route = required(j, "route", "");
+    p.route = get_or<std::string>(route, "description", "route", "");
+    p.length_m = get<double>(route, "length_m", "route");
+    p.tracks = get_or<std::size_t>(route, "tracks", "route", 0);
+    const auto& elements = required(j, "elements", "");
+    if (!elements.is_array()) {
+        throw std::invalid_argument("elements: expected an array");
+    }
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        p.elements.push_back(element_from_json(elements[i], "elements[" + std::to_string(i) + "]"));
+    }
+    if (j.contains("unparsed")) {
+        const auto& unparsed = j["unparsed"];
+        for (std::size_t i = 0; i < unparsed.size(); ++i) {
+            const std::string where = "unparsed[" + std::to_string(i) + "]";
+            p.unparsed.push_back({get_or<std::vector<std::string>>(unparsed[i], "osm_ids", where, {}),
+                                  get_or<std::string>(unparsed[i], "tag", where, ""),
+                                  get_or<std::string>(unparsed[i], "value", where, ""),
+                                  get_or<std::string>(unparsed[i], "reason", where, "")});
+        }
+    }
+    if (j.contains("summary")) {
+        // nlohmann::json sorts keys; read_profile() restores the file's order.
+        p.summary = nlohmann::ordered_json(j["summary"]);
+    }
+    return p;
+}
+
+OddProfile read_profile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw InputError(file.string(), std::filesystem::exists(file) ? "cannot be read" : "no such file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    // Parsed keeping key order so that the summary's classes stay in the
+    // order the tagger wrote them (the taxonomy's bin order).
+    nlohmann::ordered_json j;
+    try {
+        j = nlohmann::ordered_json::parse(text.str());
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError(file.string(), std::string{"invalid JSON: "} + e.what());
+    }
+    try {
+        OddProfile p = profile_from_json(nlohmann::json(j));
+        if (j.is_object() && j.contains("summary")) {
+            p.summary = j["summary"];
+        }
+        return p;
+    } catch (const std::invalid_argument& e) {
+        throw InputError(file.string(), std::string{"not an ODD profile: "} + e.what());
+    }
+}
+
+} // namespace railodd::odd

@@ -1,0 +1,145 @@
+#include "tag_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace railodd::odd {
+
+TagContext::TagContext(const TaggerInput& in, const Taxonomy& taxonomy, OddProfile& out)
+    : in_(in), taxonomy_(taxonomy), out_(out) {
+    for (const auto& w : in.map_input.ingest.tracks) {
+        way_by_id_[w.id] = &w;
+    }
+    for (const auto& f : in.map_input.ingest.features) {
+        if (f.osm_type == "node") {
+            node_features_.emplace(f.id, &f);
+        }
+    }
+}
+
+const geometry::IndexedAlignment& TagContext::alignment(std::size_t edge) {
+    auto& slot = alignments_[edge];
+    if (!slot) {
+        slot = std::make_unique<geometry::IndexedAlignment>(geo().fitted_tracks.edges[edge].alignment, 2.0);
+    }
+    return *slot;
+}
+
+const std::vector<WayRange>& TagContext::ways(std::size_t edge) {
+    auto it = ways_.find(edge);
+    if (it != ways_.end()) {
+        return it->second;
+    }
+    const auto& e = geo().tracks.edges[edge];
+    const auto& ia = alignment(edge);
+    std::vector<WayRange> out;
+    for (const auto& span : e.ways) {
+        const auto w = way_by_id_.find(span.way_id);
+        if (w == way_by_id_.end()) {
+            continue;
+        }
+        const auto& a = e.nodes[span.first].xy;
+        const auto& b = e.nodes[span.last].xy;
+        const double sa = ia.project(a.x, a.y).s, sb = ia.project(b.x, b.y).s;
+        out.push_back({std::min(sa, sb), std::max(sa, sb), w->second});
+    }
+    std::sort(out.begin(), out.end(), [](const WayRange& x, const WayRange& y) { return x.s0 < y.s0; });
+    // The first and last span reach the alignment's ends (projection of the end
+    // nodes can fall a few centimetres short).
+    if (!out.empty()) {
+        out.front().s0 = 0.0;
+        out.back().s1 = ia.length();
+    }
+    return ways_.emplace(edge, std::move(out)).first->second;
+}
+
+const ingest::Feature* TagContext::feature_at_node(std::int64_t node_id) const {
+    const auto it = node_features_.find(node_id);
+    return it == node_features_.end() ? nullptr : it->second;
+}
+
+std::vector<std::string> TagContext::way_ids(std::size_t edge, double s0, double s1) {
+    std::vector<std::string> ids;
+    for (const auto& r : ways(edge)) {
+        const bool overlaps = r.s1 > s0 + 1e-6 && r.s0 < s1 - 1e-6;
+        const bool holds = s1 - s0 <= 1e-6 && r.s0 <= s0 + 1e-6 && s0 <= r.s1 + 1e-6;
+        const std::string id = "way:" + std::to_string(r.way->id);
+        if ((overlaps || holds) && std::find(ids.begin(), ids.end(), id) == ids.end()) {
+            ids.push_back(id);
+        }
+    }
+    return ids;
+}
+
+void TagContext::unparsed(std::vector<std::string> osm_ids, const std::string& tag, const std::string& value,
+                          const std::string& reason) {
+    out_.unparsed.push_back({std::move(osm_ids), tag, value, reason});
+}
+
+namespace {
+
+std::vector<TaggedAttribute> classified(const Taxonomy& t, const Element& element, std::vector<TaggedAttribute> attrs) {
+    std::vector<TaggedAttribute> out;
+    for (auto& a : attrs) {
+        const Attribute* def = t.attribute(element, a.name);
+        const double* v = std::get_if<double>(&a.value);
+        std::string label = def && v ? classify(*def, std::abs(*v)) : "";
+        out.push_back(std::move(a));
+        if (!label.empty()) {
+            out.push_back({out.back().name + "_class", label});
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+void TagContext::tag(const std::string& path, std::size_t edge, double s0, double s1,
+                     std::vector<TaggedAttribute> attributes, std::vector<std::string> osm_ids,
+                     const std::string& source) {
+    const Element* element = taxonomy_.find(path);
+    if (!element) {
+        throw std::logic_error("the tagger names '" + path + "', which is not in " + taxonomy_.source);
+    }
+    if (!written(edge)) {
+        return;
+    }
+    attributes = classified(taxonomy_, *element, std::move(attributes));
+    const auto& ia = alignment(edge);
+    const auto& proj = geo().ingest.projection;
+    auto lonlat = [&](double s) {
+        const auto p = ia.evaluate(s);
+        const auto ll = proj.inverse({p.x, p.y});
+        return std::pair{ll.lon, ll.lat};
+    };
+    for (const auto& piece : in_.map.rail.pieces[edge]) {
+        const bool point = s1 - s0 <= 1e-9;
+        const double a = std::max(s0, piece.s0), b = std::min(s1, piece.s1);
+        if (point ? (s0 < piece.s0 - 1e-9 || s0 > piece.s1 + 1e-9) : b - a <= 1e-6) {
+            continue;
+        }
+        TaggedElement t;
+        t.element = path;
+        t.element_id = element->id;
+        t.attributes = attributes;
+        t.road_id = in_.map.map.roads[piece.road].id;
+        t.s_start = (point ? s0 : a) - piece.s0;
+        t.s_end = (point ? s0 : b) - piece.s0;
+        t.track = edge;
+        t.chainage_start = point ? s0 : a;
+        t.chainage_end = point ? s0 : b;
+        t.point = point;
+        t.osm_ids = osm_ids;
+        t.source = source;
+        const int n = point ? 1 : std::max(2, static_cast<int>(std::ceil((b - a) / 20.0)) + 1);
+        for (int i = 0; i < n; ++i) {
+            t.lonlat.push_back(lonlat(n == 1 ? s0 : a + (b - a) * i / (n - 1)));
+        }
+        out_.elements.push_back(std::move(t));
+        if (point) {
+            break; // at a piece boundary, the first road holding the point
+        }
+    }
+}
+
+} // namespace railodd::odd

@@ -1,0 +1,108 @@
+// Track geometry tags: one element per fitted primitive (straight, transition
+// curve, curve with its radius), gradient stretches of one class from the
+// vertical profile, and cant.
+#include "tag_context.hpp"
+
+#include <cmath>
+
+namespace railodd::odd {
+
+namespace {
+
+const char* const straight = "Scenery/Track geometry/Horizontal/Straight";
+const char* const transition = "Scenery/Track geometry/Horizontal/Transition curve";
+const char* const curve = "Scenery/Track geometry/Horizontal/Curve";
+const char* const gradient = "Scenery/Track geometry/Vertical/Gradient";
+const char* const cant_path = "Scenery/Track geometry/Cant";
+
+constexpr double gradient_step_m = 10.0; // profile sampling for gradient classes
+
+} // namespace
+
+void tag_horizontal(TagContext& ctx) {
+    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
+        const geometry::Alignment& a = ctx.geo().fitted_tracks.edges[e].alignment;
+        double s = 0.0;
+        for (const auto& p : a.primitives) {
+            const double s1 = s + p.length;
+            if (p.length > 1e-6) {
+                auto ids = ctx.way_ids(e, s, s1);
+                switch (p.kind) {
+                case geometry::PrimitiveKind::line:
+                    ctx.tag(straight, e, s, s1, {{"length", p.length}}, ids, "derived");
+                    break;
+                case geometry::PrimitiveKind::spiral:
+                    ctx.tag(transition, e, s, s1, {{"length", p.length}, {"shape", std::string{"clothoid"}}}, ids, "derived");
+                    break;
+                case geometry::PrimitiveKind::arc:
+                    ctx.tag(curve, e, s, s1,
+                            {{"radius", 1.0 / std::abs(p.curv_start)},
+                             {"direction", std::string{p.curv_start > 0 ? "left" : "right"}},
+                             {"length", p.length}},
+                            ids, "derived");
+                    break;
+                }
+            }
+            s = s1;
+        }
+    }
+}
+
+namespace {
+
+// Maximal stretches whose sampled gradient stays in one class and direction;
+// each is tagged with its steepest gradient (conservative for ODD checks).
+void tag_gradients(TagContext& ctx, std::size_t e, const geometry::VerticalProfile& vp) {
+    const Element* el = ctx.taxonomy().find(gradient);
+    const Attribute* attr = el ? ctx.taxonomy().attribute(*el, "gradient") : nullptr;
+    const double len = ctx.alignment(e).length();
+    const std::string source = vp.source == geometry::ElevationSource::dem ? "dem" : "osm";
+    struct Run {
+        double s0, s1, steepest;
+        std::string cls, dir;
+    };
+    std::vector<Run> runs;
+    const int n = std::max(1, static_cast<int>(std::ceil(len / gradient_step_m)));
+    for (int i = 0; i < n; ++i) {
+        const double s0 = len * i / n, s1 = len * (i + 1) / n;
+        const double g = 1000.0 * (geometry::elevation_at(vp.polys, s1) - geometry::elevation_at(vp.polys, s0)) /
+                         std::max(s1 - s0, 1e-9);
+        const std::string cls = attr ? classify(*attr, std::abs(g)) : "";
+        const std::string dir = cls == "level" ? "level" : (g > 0 ? "rising" : "falling");
+        if (!runs.empty() && runs.back().cls == cls && runs.back().dir == dir) {
+            runs.back().s1 = s1;
+            runs.back().steepest = std::max(runs.back().steepest, std::abs(g));
+        } else {
+            runs.push_back({s0, s1, std::abs(g), cls, dir});
+        }
+    }
+    for (const auto& r : runs) {
+        ctx.tag(gradient, e, r.s0, r.s1,
+                {{"gradient", r.steepest}, {"direction", r.dir}, {"length", r.s1 - r.s0}},
+                ctx.way_ids(e, r.s0, r.s1), source);
+    }
+}
+
+} // namespace
+
+void tag_vertical_and_cant(TagContext& ctx) {
+    const auto& profiles = ctx.geo().profiles;
+    const auto& cants = ctx.geo().cants;
+    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
+        // Without elevation data the profile is flat by assumption, not a
+        // measured level track: no gradient is claimed (report.json says so).
+        if (e < profiles.size() && profiles[e].source != geometry::ElevationSource::flat) {
+            tag_gradients(ctx, e, profiles[e]);
+        }
+        if (e >= cants.size()) {
+            continue;
+        }
+        for (const auto& c : cants[e]) {
+            const double mm = 1000.0 * std::max(c.cant_start_m, c.cant_end_m);
+            ctx.tag(cant_path, e, c.s_start, c.s_end, {{"cant", mm}}, ctx.way_ids(e, c.s_start, c.s_end),
+                    c.estimated ? "derived" : "osm");
+        }
+    }
+}
+
+} // namespace railodd::odd
