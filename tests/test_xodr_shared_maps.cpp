@@ -58,6 +58,28 @@ TEST_P(XodrSharedMaps, ValidatesImportsAndCarriesTheMappedFeatures) {
     EXPECT_EQ(odr["tracks_not_written"].size(), 0u);
     const int switches = odr["rail"]["switches"], vertices = odr["rail"]["switch_vertices"];
     EXPECT_GE(switches * 10, vertices * 9) << "at least 90 % of the switch vertices become <switch>";
+    // The ODD profile tags what the data maps: every switch vertex, every
+    // crossing at grade, every attached station and halt, every tunnel and
+    // bridge way of the tracks.
+    const auto profile = nlohmann::json::parse(read_file(out / "odd_profile.json"));
+    const auto& counts = profile["summary"]["counts"];
+    EXPECT_EQ(counts.value("Switch", 0), vertices);
+    EXPECT_EQ(counts.value("Level crossing", 0) + counts.value("Footpath crossing", 0),
+              topo["road_rail_crossings"]["at_grade"].get<int>());
+    EXPECT_EQ(counts.value("Station", 0) + counts.value("Halt", 0), mapped_stations);
+    std::size_t tunnels = 0, bridges = 0;
+    const auto ingest = nlohmann::json::parse(read_file(out / "ingest.geojson"));
+    for (const auto& f : ingest["features"]) {
+        const auto& p = f["properties"];
+        if (p["layer"] != "track") {
+            continue;
+        }
+        const std::string tunnel = p["tags"].value("tunnel", "no"), bridge = p["tags"].value("bridge", "no");
+        tunnels += tunnel != "no" ? 1 : 0;
+        bridges += tunnel == "no" && bridge != "no" ? 1 : 0;
+    }
+    EXPECT_EQ(profile["summary"]["tunnels"]["count"].get<std::size_t>(), tunnels);
+    EXPECT_EQ(profile["summary"]["bridges"]["count"].get<std::size_t>(), bridges);
     std::cout << c.file << " (" << c.revision << "): " << odr["rail_roads"] << " rail roads, " << switches << " of "
               << vertices << " switches, " << odr["stations"] << " stations, " << odr["level_crossings"]
               << " level crossings, " << odr["track_ends_not_linked"].size() << " unlinked track ends; netconvert "
