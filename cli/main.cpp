@@ -1,6 +1,7 @@
 // railodd: OpenStreetMap / GIS railway data to simulation maps and scenarios.
 #include "command.hpp"
 #include "convert_command.hpp"
+#include "profile_command.hpp"
 #include "sample_command.hpp"
 #include "validate_command.hpp"
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
 
     std::vector<std::unique_ptr<cli::Command>> commands;
     commands.push_back(std::make_unique<cli::ConvertCommand>());
+    commands.push_back(std::make_unique<cli::ProfileCommand>());
     commands.push_back(std::make_unique<cli::SampleCommand>());
     commands.push_back(std::make_unique<cli::ValidateCommand>());
     std::vector<CLI::App*> subs;

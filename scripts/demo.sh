@@ -6,9 +6,11 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/railodd sample -o out/sample
-./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif
+# The sample is drawn with 0.3 m node scatter (sample_route_truth.json).
+./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif --node-noise 0.3 --estimate-cant
 ./build/railodd validate out/sample_route/map.xodr --netconvert
+./build/railodd profile out/sample_route --odd-spec data/odd/example_odd_spec.yaml || true # the spur lies outside this ODD
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
-echo "  conversion (map.xodr, report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
+echo "  conversion (map.xodr, odd_profile.json/.geojson/.csv, report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"

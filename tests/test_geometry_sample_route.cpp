@@ -99,7 +99,7 @@ TEST(GeometrySampleRoute, SwitchLinksAreContinuousInPositionHeadingAndCurvature)
             EXPECT_DOUBLE_EQ(e.alignment.primitives[i - 1].curv_end, e.alignment.primitives[i].curv_start);
         }
     }
-    EXPECT_TRUE(f.net.g1_chains.empty());
+    EXPECT_TRUE(f.net.corner_chains.empty());
 }
 
 TEST(GeometrySampleRoute, MappedNodesLieCloseToTheFittedLine) {

@@ -1,5 +1,6 @@
 // Track fitting on real extracts: every mapped track covered, mapped nodes
-// close to the fitted line, links continuous where the G2 fit held.
+// close to the fitted line, every branch link continuous (G2), corner chains
+// included.
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/ingest/osm_reader.hpp"
 #include "test_support.hpp"
@@ -14,7 +15,7 @@ namespace {
 
 struct Figures {
     double p95 = 0.0, max = 0.0;
-    std::size_t edges = 0, covered = 0, g1 = 0;
+    std::size_t edges = 0, covered = 0, corner = 0;
 };
 
 Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
@@ -35,7 +36,7 @@ Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
         f.covered += e.alignment.primitives.empty() ? 0 : 1;
     }
     f.edges = g.edges.size();
-    f.g1 = net.g1_chains.size();
+    f.corner = net.corner_chains.size();
     std::sort(d.begin(), d.end());
     f.p95 = d[d.size() * 95 / 100];
     f.max = d.back();
@@ -47,23 +48,20 @@ Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
 TEST(GeometrySharedExtracts, NodesLieWithinHalfAMetreAtP95AndTwoMetresAtMost) {
     RAILODD_REQUIRE_SHARED_DATA();
     for (const char* name : {"gh_harsdorf.osm.pbf", "valhalla_liechtenstein-latest.osm.pbf",
-                             "gh_north-bayreuth.osm.gz", "gh_lauf-200115.osm.pbf"}) {
+                             "gh_north-bayreuth.osm.gz", "gh_lauf-200115.osm.pbf", "osrm_monaco.osm.pbf",
+                             "gh_krems.osm.gz", "valhalla_munchen.osm.pbf"}) {
         SCOPED_TRACE(name);
         FittedNetwork net;
         const Figures f = fit_extract(test::shared_data() / "osm" / name, net);
         std::cout << name << ": p95 " << f.p95 << " m, max " << f.max << " m, " << f.edges << " edges, "
-                  << f.g1 << " chains filleted (G1)\n";
+                  << f.corner << " corner chains\n";
         EXPECT_EQ(f.covered, f.edges) << "every mapped track has a centreline";
         EXPECT_LE(f.p95, 0.5);
         EXPECT_LE(f.max, 2.0);
-        auto is_g1 = [&](std::size_t c) {
-            return std::find(net.g1_chains.begin(), net.g1_chains.end(), c) != net.g1_chains.end();
-        };
         for (const auto& l : net.branch_links) {
-            if (!is_g1(l.chain) && !is_g1(l.to_chain)) {
-                EXPECT_LT(l.gap_m, 1e-3);
-                EXPECT_LT(l.heading_rad, 1e-4);
-            }
+            EXPECT_LT(l.gap_m, 1e-3);
+            EXPECT_LT(l.heading_rad, 1e-4);
+            EXPECT_LT(l.curvature, 1e-6);
         }
     }
 }

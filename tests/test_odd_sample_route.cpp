@@ -155,11 +155,15 @@ TEST(OddSampleRoute, StationsTunnelAndBridgeOnTheRightStretch) {
 TEST(OddSampleRoute, SwitchesSignalsAndSummary) {
     const Converted& r = run();
     const auto& s = r.profile["summary"];
-    EXPECT_EQ(s["counts"]["Switch"], r.truth["features"]["switches"].size());
-    EXPECT_EQ(s["counts"]["Level crossing"], 1);
+    EXPECT_EQ(s["switches"], r.truth["features"]["switches"].size());
+    EXPECT_EQ(s["level_crossings_by_barrier"]["full"], 1);
     EXPECT_EQ(s["tunnels"]["count"], 1);
     EXPECT_EQ(s["bridges"]["count"], 1);
-    EXPECT_EQ(s["counts"]["Signal"], r.truth["features"]["signals"].size());
+    int signals = 0;
+    for (const auto& [category, n] : s["signals_by_category"].items()) {
+        signals += n.get<int>();
+    }
+    EXPECT_EQ(signals, static_cast<int>(r.truth["features"]["signals"].size()));
     EXPECT_NEAR(s["length_km"].get<double>(), 10.19, 0.1);
     EXPECT_EQ(r.profile["unparsed"].size(), 0u);
 }

@@ -62,11 +62,14 @@ TEST_P(XodrSharedMaps, ValidatesImportsAndCarriesTheMappedFeatures) {
     // crossing at grade, every attached station and halt, every tunnel and
     // bridge way of the tracks.
     const auto profile = nlohmann::json::parse(read_file(out / "odd_profile.json"));
-    const auto& counts = profile["summary"]["counts"];
-    EXPECT_EQ(counts.value("Switch", 0), vertices);
-    EXPECT_EQ(counts.value("Level crossing", 0) + counts.value("Footpath crossing", 0),
-              topo["road_rail_crossings"]["at_grade"].get<int>());
-    EXPECT_EQ(counts.value("Station", 0) + counts.value("Halt", 0), mapped_stations);
+    const auto& summary = profile["summary"];
+    EXPECT_EQ(summary["switches"].get<int>(), vertices);
+    int level_crossings = summary["footpath_crossings"].get<int>();
+    for (const auto& [barrier, n] : summary["level_crossings_by_barrier"].items()) {
+        level_crossings += n.get<int>();
+    }
+    EXPECT_EQ(level_crossings, topo["road_rail_crossings"]["at_grade"].get<int>());
+    EXPECT_EQ(summary["stations"].get<int>() + summary["halts"].get<int>(), mapped_stations);
     std::size_t tunnels = 0, bridges = 0;
     const auto ingest = nlohmann::json::parse(read_file(out / "ingest.geojson"));
     for (const auto& f : ingest["features"]) {

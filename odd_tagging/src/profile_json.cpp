@@ -48,7 +48,8 @@ ojson element_json(const TaggedElement& e) {
 // Every lookup names the key and where it was expected, so that a hand-edited
 // file that lost a key is reported as "elements[3].s_start: missing".
 
-const nlohmann::json& required(const nlohmann::json& j, const std::string& key, const std::string& where) {
+template <class Json>
+const Json& required(const Json& j, const std::string& key, const std::string& where) {
     if (!j.is_object()) {
         throw std::invalid_argument(where + ": expected an object");
     }
@@ -59,35 +60,37 @@ const nlohmann::json& required(const nlohmann::json& j, const std::string& key, 
     return *it;
 }
 
-template <class T>
-T get(const nlohmann::json& j, const std::string& key, const std::string& where) {
+template <class T, class Json>
+T get(const Json& j, const std::string& key, const std::string& where) {
     const auto& v = required(j, key, where);
     try {
-        return v.get<T>();
-    } catch (const nlohmann::json::exception&) {
+        return v.template get<T>();
+    } catch (const nlohmann::json::exception&) { // shared by both specialisations
         throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": wrong type (" + v.type_name() + ")");
     }
 }
 
-template <class T>
-T get_or(const nlohmann::json& j, const std::string& key, const std::string& where, T fallback) {
+template <class T, class Json>
+T get_or(const Json& j, const std::string& key, const std::string& where, T fallback) {
     return j.contains(key) ? get<T>(j, key, where) : fallback;
 }
 
-AttributeValue attribute_value(const nlohmann::json& v, const std::string& where) {
+template <class Json>
+AttributeValue attribute_value(const Json& v, const std::string& where) {
     if (v.is_boolean()) {
-        return v.get<bool>();
+        return v.template get<bool>();
     }
     if (v.is_number()) {
-        return v.get<double>();
+        return v.template get<double>();
     }
     if (v.is_string()) {
-        return v.get<std::string>();
+        return v.template get<std::string>();
     }
     throw std::invalid_argument(where + ": expected a number, string or bool (" + v.type_name() + ")");
 }
 
-TaggedElement element_from_json(const nlohmann::json& j, const std::string& where) {
+template <class Json>
+TaggedElement element_from_json(const Json& j, const std::string& where) {
     TaggedElement e;
     e.element = get<std::string>(j, "odd_element", where);
     e.element_id = get_or<std::string>(j, "id", where, "");
@@ -144,7 +147,10 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
     return j;
 }
 
-OddProfile profile_from_json(const nlohmann::json& j) {
+namespace {
+
+template <class Json>
+OddProfile profile_from(const Json& j) {
     OddProfile p;
     const auto& taxonomy = required(j, "taxonomy", "");
     p.taxonomy_name = get_or<std::string>(taxonomy, "name", "taxonomy", "");
@@ -163,6 +169,9 @@ OddProfile profile_from_json(const nlohmann::json& j) {
     }
     if (j.contains("unparsed")) {
         const auto& unparsed = j["unparsed"];
+        if (!unparsed.is_array()) {
+            throw std::invalid_argument("unparsed: expected an array");
+        }
         for (std::size_t i = 0; i < unparsed.size(); ++i) {
             const std::string where = "unparsed[" + std::to_string(i) + "]";
             p.unparsed.push_back({get_or<std::vector<std::string>>(unparsed[i], "osm_ids", where, {}),
@@ -172,11 +181,16 @@ OddProfile profile_from_json(const nlohmann::json& j) {
         }
     }
     if (j.contains("summary")) {
-        // nlohmann::json sorts keys; read_profile() restores the file's order.
         p.summary = nlohmann::ordered_json(j["summary"]);
     }
     return p;
 }
+
+} // namespace
+
+OddProfile profile_from_json(const nlohmann::json& j) { return profile_from(j); }
+
+OddProfile profile_from_json(const nlohmann::ordered_json& j) { return profile_from(j); }
 
 OddProfile read_profile(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -185,8 +199,8 @@ OddProfile read_profile(const std::filesystem::path& file) {
     }
     std::ostringstream text;
     text << in.rdbuf();
-    // Parsed keeping key order so that the summary's classes stay in the
-    // order the tagger wrote them (the taxonomy's bin order).
+    // Parsed keeping key order: attributes and the summary's classes stay in
+    // the order the tagger wrote them (the taxonomy's bin order).
     nlohmann::ordered_json j;
     try {
         j = nlohmann::ordered_json::parse(text.str());
@@ -194,11 +208,7 @@ OddProfile read_profile(const std::filesystem::path& file) {
         throw InputError(file.string(), std::string{"invalid JSON: "} + e.what());
     }
     try {
-        OddProfile p = profile_from_json(nlohmann::json(j));
-        if (j.is_object() && j.contains("summary")) {
-            p.summary = j["summary"];
-        }
-        return p;
+        return profile_from_json(j);
     } catch (const std::invalid_argument& e) {
         throw InputError(file.string(), std::string{"not an ODD profile: "} + e.what());
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <utility>
 
 namespace railodd::odd {
@@ -23,6 +24,7 @@ constexpr Kind curve{"sc.geo.hz.curve", "Scenery/Track geometry/Horizontal/Curve
 constexpr Kind gradient{"sc.geo.vt.gradient", "Scenery/Track geometry/Vertical/Gradient"};
 constexpr Kind speed_limit{"op.speed.limit", "Operational Conditions/Speed/Speed limit"};
 constexpr Kind level_crossing{"sc.xing.level", "Scenery/Crossings/Level crossing"};
+constexpr Kind footpath_crossing{"sc.xing.foot", "Scenery/Crossings/Footpath crossing"};
 constexpr Kind station{"sc.stn.station", "Scenery/Stations and stops/Station"};
 constexpr Kind halt{"sc.stn.halt", "Scenery/Stations and stops/Halt"};
 constexpr Kind platform{"sc.stn.platform", "Scenery/Stations and stops/Platform"};
@@ -112,19 +114,26 @@ ojson count_by(const OddProfile& p, const Kind& k, const std::string& name) {
     return j;
 }
 
+// A stretch written over several roads (a tunnel through a junction's
+// connecting road) is several elements with the same OSM ids: one feature.
 std::size_t count(const OddProfile& p, const Kind& k) {
-    return static_cast<std::size_t>(std::count_if(p.elements.begin(), p.elements.end(),
-                                                  [&](const TaggedElement& e) { return is(e, k); }));
+    std::set<std::pair<std::size_t, std::vector<std::string>>> ranges;
+    std::size_t points = 0;
+    for (const auto& e : p.elements) {
+        if (is(e, k)) {
+            e.point || e.osm_ids.empty() ? ++points : (ranges.insert({e.track, e.osm_ids}), 0);
+        }
+    }
+    return points + ranges.size();
 }
 
 // A structure tagged as a point (no s-range on the map) still has its length
 // attribute from the OSM way.
 ojson structures(const OddProfile& p, const Kind& k) {
-    std::size_t n = 0;
+    const std::size_t n = count(p, k);
     double metres = 0.0;
     for (const auto& e : p.elements) {
         if (is(e, k)) {
-            ++n;
             const AttributeValue* length = e.find("length");
             metres += e.point && length && std::holds_alternative<double>(*length) ? std::get<double>(*length)
                                                                                    : range_m(e);
@@ -202,6 +211,7 @@ nlohmann::ordered_json summarize(const OddProfile& p, const Taxonomy* taxonomy) 
     j["gradient_km_by_class"] = km_by_class(p, taxonomy, gradient, "gradient");
     j["speed_km_by_class"] = km_by_class(p, taxonomy, speed_limit, "maxspeed");
     j["level_crossings_by_barrier"] = count_by(p, level_crossing, "barrier");
+    j["footpath_crossings"] = count(p, footpath_crossing);
     j["stations"] = count(p, station);
     j["halts"] = count(p, halt);
     j["platforms"] = count(p, platform);

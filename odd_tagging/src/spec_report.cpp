@@ -82,9 +82,11 @@ std::string stretches_text(const SpecVerdict& verdict) {
     }
     std::string out = printf_text("stretches outside the ODD: %zu\n", verdict.stretches.size());
     for (const auto& s : verdict.stretches) {
-        out += printf_text("  track %zu ch %.1f-%.1f m (%.1f m)  roads %s  %zu violations: ", s.track, s.chainage_start,
-                           s.chainage_end, s.chainage_end - s.chainage_start, joined(s.road_ids, " ").c_str(),
-                           s.violations);
+        const bool point = s.chainage_end - s.chainage_start < 1e-3;
+        const std::string where = range_text(s.chainage_start, s.chainage_end, point) + " m" +
+                                  (point ? "" : printf_text(" (%.1f m)", s.chainage_end - s.chainage_start));
+        out += printf_text("  track %zu ch %s  roads %s  %zu violation%s: ", s.track, where.c_str(),
+                           joined(s.road_ids, " ").c_str(), s.violations, s.violations == 1 ? "" : "s");
         out += joined(s.elements, ", ") + "\n";
     }
     return out;

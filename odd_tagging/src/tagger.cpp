@@ -2,6 +2,8 @@
 
 #include "tag_context.hpp"
 
+#include "railodd/odd/profile_summary.hpp"
+
 #include <algorithm>
 #include <set>
 #include <sstream>
@@ -21,65 +23,6 @@ std::string text_of(const AttributeValue& v) {
         return *b ? "true" : "false";
     }
     return std::get<std::string>(v);
-}
-
-std::string class_of(const TaggedElement& t, const std::string& attribute) {
-    const AttributeValue* v = t.find(attribute + "_class");
-    return v ? text_of(*v) : "unclassified";
-}
-
-nlohmann::ordered_json summarize(const OddProfile& p) {
-    nlohmann::ordered_json km_radius = nlohmann::ordered_json::object(), km_gradient = nlohmann::ordered_json::object(),
-                           km_speed = nlohmann::ordered_json::object(), barriers = nlohmann::ordered_json::object(),
-                           signals = nlohmann::ordered_json::object(), counts = nlohmann::ordered_json::object();
-    double straight = 0.0, transition = 0.0;
-    std::map<std::string, std::set<std::string>> structures; // path -> osm ids
-    std::map<std::string, double> structure_m;
-    for (const auto& t : p.elements) {
-        const double km = (t.s_end - t.s_start) / 1000.0;
-        const std::string leaf = t.element.substr(t.element.rfind('/') + 1);
-        if (leaf == "Curve") {
-            km_radius[class_of(t, "radius")] = km_radius.value(class_of(t, "radius"), 0.0) + km;
-        } else if (leaf == "Straight") {
-            straight += km;
-        } else if (leaf == "Transition curve") {
-            transition += km;
-        } else if (leaf == "Gradient") {
-            km_gradient[class_of(t, "gradient")] = km_gradient.value(class_of(t, "gradient"), 0.0) + km;
-        } else if (leaf == "Speed limit") {
-            km_speed[class_of(t, "maxspeed")] = km_speed.value(class_of(t, "maxspeed"), 0.0) + km;
-        } else if (leaf == "Tunnel" || leaf == "Bridge") {
-            structures[leaf].insert(t.osm_ids.begin(), t.osm_ids.end());
-            structure_m[leaf] += t.s_end - t.s_start;
-        }
-        if (t.point) {
-            counts[leaf] = counts.value(leaf, 0) + 1;
-        }
-        if (leaf == "Level crossing") {
-            const AttributeValue* b = t.find("barrier");
-            const std::string key = b ? text_of(*b) : "unknown";
-            barriers[key] = barriers.value(key, 0) + 1;
-        } else if (leaf == "Signal") {
-            const AttributeValue* c = t.find("category");
-            signals[text_of(*c)] = signals.value(text_of(*c), 0) + 1;
-        }
-    }
-    nlohmann::ordered_json s;
-    s["length_km"] = p.length_m / 1000.0;
-    s["km_straight"] = straight;
-    s["km_transition"] = transition;
-    s["km_by_radius_class"] = km_radius;
-    s["km_by_gradient_class"] = km_gradient;
-    s["km_by_speed_class"] = km_speed;
-    s["counts"] = counts;
-    s["level_crossings_by_barrier"] = barriers;
-    s["signals_by_category"] = signals;
-    for (const char* leaf : {"Tunnel", "Bridge"}) {
-        s[std::string{leaf} == "Tunnel" ? "tunnels" : "bridges"] = {{"count", structures[leaf].size()},
-                                                                    {"length_m", structure_m[leaf]}};
-    }
-    s["unparsed_tag_values"] = p.unparsed.size();
-    return s;
 }
 
 } // namespace
@@ -108,7 +51,7 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
         return std::tie(a.track, a.chainage_start, a.element, a.chainage_end) <
                std::tie(b.track, b.chainage_start, b.element, b.chainage_end);
     });
-    p.summary = summarize(p);
+    p.summary = summarize(p, &taxonomy);
     return p;
 }
 

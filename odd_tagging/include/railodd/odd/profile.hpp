@@ -71,6 +71,9 @@ struct OddProfile {
 
 nlohmann::ordered_json to_json(const OddProfile& profile);
 OddProfile profile_from_json(const nlohmann::json& j); // throws std::invalid_argument naming the missing key
+// The same keeping the file's key order (attribute order, summary classes);
+// nlohmann::json sorts object keys.
+OddProfile profile_from_json(const nlohmann::ordered_json& j);
 OddProfile read_profile(const std::filesystem::path& file); // throws railodd::InputError naming the file
 
 } // namespace railodd::odd
