@@ -9,7 +9,7 @@ bash scripts/build.sh
 # The sample is drawn with 0.3 m node scatter (sample_route_truth.json).
 ./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif --node-noise 0.3 --estimate-cant
 ./build/railodd validate out/sample_route/map.xodr --netconvert
-./build/railodd profile out/sample_route --odd-spec data/odd/example_odd_spec.yaml || true # the spur lies outside this ODD
+./build/railodd profile out/sample_route --odd-spec data/odd/example_odd_spec.yaml || [ $? -eq 5 ] # exit 5: outside the ODD (the industrial spur)
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"

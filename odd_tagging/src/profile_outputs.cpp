@@ -107,16 +107,15 @@ std::string joined(const std::vector<std::string>& parts, const char* sep) {
 
 } // namespace
 
+// One feature per line: a whole route's profile stays a few MB, and diffs of
+// two runs read element by element.
 std::string to_geojson(const OddProfile& profile) {
-    ojson features = ojson::array();
-    for (const auto& e : profile.elements) {
-        features.push_back(feature(e));
+    std::string out = "{\"type\": \"FeatureCollection\", \"name\": \"odd_profile\", \"features\": [\n";
+    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
+        out += feature(profile.elements[i]).dump();
+        out += i + 1 < profile.elements.size() ? ",\n" : "\n";
     }
-    ojson j;
-    j["type"] = "FeatureCollection";
-    j["name"] = "odd_profile";
-    j["features"] = std::move(features);
-    return j.dump(1) + "\n";
+    return out + "]}\n";
 }
 
 std::string to_csv(const OddProfile& profile) {
