@@ -3,6 +3,8 @@
 // noise, mapper-like node spacing). Run: build/bench/bench_fit. The counter
 // km/s is track length fitted per second; its growth with length shows the
 // cost per kilometre stays flat (the fit works window by window).
+// BM_CornerPolyline times the clothoid-corner construction on the same nodes.
+#include "railodd/geometry/corner_fit.hpp"
 #include "railodd/geometry/fit_alignment.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 
@@ -74,8 +76,23 @@ void BM_FitTrack(benchmark::State& state) {
     state.counters["primitives"] = static_cast<double>(primitives);
 }
 
+// The corner construction on the same nodes: the fallback for chains the
+// fit cannot follow, and every road. It is linear in the node count.
+void BM_CornerPolyline(benchmark::State& state) {
+    const double km = static_cast<double>(state.range(0));
+    const Alignment truth = track_of_length(km);
+    const std::vector<Point> pts = nodes_of(truth);
+    for (auto _ : state) {
+        const Alignment a = corner_polyline(pts, std::nullopt, std::nullopt, {});
+        benchmark::DoNotOptimize(a.primitives.data());
+    }
+    state.counters["km/s"] = benchmark::Counter(length(truth) / 1000.0, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["nodes"] = static_cast<double>(pts.size());
+}
+
 } // namespace
 
 BENCHMARK(BM_FitTrack)->Arg(1)->Arg(4)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CornerPolyline)->Arg(1)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -68,7 +68,8 @@ ordered_json links_entry(const FittedNetwork& net) {
     return {{"branch_links", net.branch_links.size()},
             {"untied_branch_ends", net.untied_branch_ends},
             {"degenerate_chains", net.degenerate_chains},
-            {"g1_fallback_chains", net.g1_chains.size()},
+            {"corner_chains", net.corner_chains.size()},
+            {"spliced_ends", net.spliced_ends},
             {"max_gap_m", gap},
             {"max_heading_jump_rad", hdg},
             {"max_curvature_jump", curv}};

@@ -1,8 +1,8 @@
 // Fitting the track graph chain by chain, through routes before the branches
 // that leave them, so every branch can start with the exact pose of its switch.
 #include "railodd/geometry/indexed_alignment.hpp"
-#include "railodd/geometry/road_fit.hpp"
 #include "railodd/geometry/track_fit.hpp"
+#include "chain_fit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -131,24 +131,23 @@ private:
         const std::optional<Pose> start = tie(c, ch.start.vertex, true, ch.start);
         const std::optional<Pose> end = tie(c, ch.end.vertex, false, ch.end);
         const ChainGeometry& cg = geometry_[c];
-        FitResult r;
+        Alignment a;
         if (distinct_points(cg.points) < 2) {
             // All nodes at one spot (a way drawn onto itself): a zero-length line
             // keeps the edge, its ids and its links in the output.
-            r.alignment.start = start.value_or(Pose{cg.points.front().x, cg.points.front().y, 0.0, 0.0});
-            r.alignment.primitives.push_back(make_line(0.0));
+            a.start = start.value_or(Pose{cg.points.front().x, cg.points.front().y, 0.0, 0.0});
+            a.primitives.push_back(make_line(0.0));
             ++degenerate_;
         } else {
-            r = fit_alignment(cg.points, start, end, o_);
-            if (r.quality.max_m > fallback_deviation_m) {
-                // No G2 sequence came within reach of every mapped node (tram
-                // corners, kinks): filleted lines keep all nodes close, G1 only.
-                r.alignment = fillet_polyline(cg.points, {1000.0, 0.25});
+            ChainFit fit = fit_chain_points(cg.points, start, end, o_);
+            if (fit.method == ChainMethod::corners) {
                 fallback_.push_back(c);
             }
+            spliced_ += fit.spliced_ends;
+            a = std::move(fit.alignment);
         }
         FittedChain& f = fitted_[c];
-        const IndexedAlignment ia(r.alignment, 2.0);
+        const IndexedAlignment ia(a, 2.0);
         // Joints are searched near where the mapped polyline puts them: a
         // chain that loops back past itself must not hand a joint to the
         // wrong pass.
@@ -167,7 +166,7 @@ private:
             f.vertex_s[ch.items[j + 1].reversed ? e.to : e.from] = s;
             prev = s;
         }
-        f.alignment = std::move(r.alignment);
+        f.alignment = std::move(a);
         f.done = true;
         in_progress_[c] = false;
     }
@@ -195,7 +194,8 @@ private:
         net.chains = chains_;
         net.untied_branch_ends = untied_;
         net.degenerate_chains = degenerate_;
-        net.g1_chains = fallback_;
+        net.corner_chains = fallback_;
+        net.spliced_ends = spliced_;
         return net;
     }
 
@@ -228,7 +228,7 @@ private:
     std::size_t untied_ = 0;
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;
-    static constexpr double fallback_deviation_m = 2.0;
+    std::size_t spliced_ = 0;
 };
 
 } // namespace

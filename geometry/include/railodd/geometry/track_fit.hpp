@@ -56,7 +56,14 @@ struct FittedNetwork {
     std::vector<LinkReport> branch_links;
     std::size_t untied_branch_ends = 0; // branch ends whose through chain was not fitted first (cycles)
     std::size_t degenerate_chains = 0;  // all nodes at one position: kept as zero-length lines
-    std::vector<std::size_t> g1_chains; // chains whose G2 fit strayed over 2 m from a node: filleted lines instead
+    // Chains built by the corner construction (corner_fit.hpp) throughout
+    // because every railway fit strayed over 2 m from a mapped node; still G2,
+    // links included.
+    std::vector<std::size_t> corner_chains;
+    // Tied chain ends whose last ~40 m the corner construction rebuilt: the
+    // railway fit missed the tied pose (a weighted target at the end), or
+    // followed the nodes better with that end free (docs/geometry.md).
+    std::size_t spliced_ends = 0;
 };
 
 // Pairs edge ends at every vertex into through routes (deflection below

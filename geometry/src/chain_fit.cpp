@@ -1,0 +1,76 @@
+// Choosing how one chain is built; see chain_fit.hpp.
+#include "chain_fit.hpp"
+
+#include "tie_splice.hpp"
+
+namespace railodd::geometry {
+
+namespace {
+
+// A railway fit straying further than this from a node is not kept.
+constexpr double fallback_deviation_m = 2.0;
+// A fit with tied ends straying further than this is tried again with free
+// ends and the tied stretches spliced on: the ties, not the mapping, are what
+// bends it most often (a branch meeting its through track at an angle).
+constexpr double retry_deviation_m = 0.5;
+// What a railway fit's end may miss its tied pose by (the fit's own
+// precision, well inside OpenDRIVE link tolerances of 1 mm / 1e-4 rad).
+constexpr double max_gap_m = 1e-4;
+constexpr double max_heading_rad = 1e-6;
+constexpr double max_curvature = 1e-9;
+// Length of a spliced stretch: room for a turnout's worth of heading change.
+constexpr double splice_length_m = 40.0;
+constexpr CornerFitOptions corner_options{1000.0, 0.25};
+
+bool misses(const EndMiss& m) {
+    return m.gap_m > max_gap_m || m.heading_rad > max_heading_rad || m.curvature > max_curvature;
+}
+
+// The fit with free ends, each tied end's stretch rebuilt by corners.
+ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
+                     const FitOptions& o) {
+    ChainFit f{fit_alignment(p, std::nullopt, std::nullopt, o).alignment, ChainMethod::spliced, 0};
+    if (start) {
+        f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options);
+        ++f.spliced_ends;
+    }
+    if (end) {
+        f.alignment = splice_end(f.alignment, p, *end, splice_length_m, corner_options);
+        ++f.spliced_ends;
+    }
+    return f;
+}
+
+} // namespace
+
+ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>& start,
+                          const std::optional<Pose>& end, const FitOptions& o) {
+    const FitResult r = fit_alignment(p, start, end, o);
+    double worst = r.quality.max_m;
+    ChainFit best{r.alignment, ChainMethod::railway, 0};
+    if ((start || end) && worst > retry_deviation_m) {
+        ChainFit s = spliced_fit(p, start, end, o);
+        const double m = measure_fit(s.alignment, p).max_m;
+        if (m < worst) {
+            best = std::move(s);
+            worst = m;
+        }
+    }
+    if (worst > fallback_deviation_m) {
+        // No railway-grade sequence came within reach of every mapped node
+        // (tram corners, kinks): lines with clothoid corners keep every node
+        // close and the ties exact.
+        return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0};
+    }
+    if (best.method == ChainMethod::railway && end && misses(end_miss(best.alignment, *end))) {
+        // The fit only aims at its end pose (a weighted target); where it
+        // misses by more than the link tolerances allow, the last stretch is
+        // rebuilt from the fit's pose there to the tied pose.
+        best.alignment = splice_end(best.alignment, p, *end, splice_length_m, corner_options);
+        best.method = ChainMethod::spliced;
+        best.spliced_ends = 1;
+    }
+    return best;
+}
+
+} // namespace railodd::geometry

@@ -1,0 +1,29 @@
+#pragma once
+// One chain's centreline from its mapped nodes and tied end poses: the
+// railway fit where it follows the nodes, the corner construction where it
+// does not, and both spliced where only the stretches next to tied ends go
+// wrong. Whatever is chosen is G2 and meets the tied poses exactly.
+#include "railodd/geometry/fit_alignment.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace railodd::geometry {
+
+enum class ChainMethod {
+    railway, // fit_alignment as it is
+    spliced, // fit_alignment with the stretch next to a tied end rebuilt by corners
+    corners, // the corner construction throughout
+};
+
+struct ChainFit {
+    Alignment alignment;
+    ChainMethod method = ChainMethod::railway;
+    std::size_t spliced_ends = 0;
+};
+
+ChainFit fit_chain_points(const std::vector<Point>& points, const std::optional<Pose>& start,
+                          const std::optional<Pose>& end, const FitOptions& options);
+
+} // namespace railodd::geometry

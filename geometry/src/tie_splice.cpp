@@ -1,0 +1,82 @@
+// Splicing the corner construction onto the end of a fitted chain; see
+// tie_splice.hpp.
+#include "tie_splice.hpp"
+
+#include "railodd/geometry/indexed_alignment.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace railodd::geometry {
+
+namespace {
+
+std::vector<double> chainage(const std::vector<Point>& p) {
+    std::vector<double> t(p.size(), 0.0);
+    for (std::size_t i = 1; i < p.size(); ++i) {
+        t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
+    }
+    return t;
+}
+
+// Arc length of node k on the fit, searched near where the mapped polyline
+// puts it so that a chain passing itself cannot hand it to the wrong pass.
+double node_s(const Alignment& fit, const std::vector<Point>& p, const std::vector<double>& t, std::size_t k) {
+    const IndexedAlignment ia(fit, 2.0);
+    const double expected = t.back() > 0.0 ? t[k] * ia.length() / t.back() : 0.0;
+    return ia.project_within(p[k].x, p[k].y, expected - 100.0, expected + 100.0).s;
+}
+
+EndMiss miss(const Pose& got, const Pose& want) {
+    return {std::hypot(got.x - want.x, got.y - want.y),
+            std::abs(std::remainder(got.hdg - want.hdg, 2 * std::numbers::pi)),
+            std::abs(got.curvature - want.curvature)};
+}
+
+} // namespace
+
+Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Pose& end, double tail_m,
+                     const CornerFitOptions& o) {
+    const std::vector<double> t = chainage(p);
+    std::size_t k = p.size() - 1;
+    while (k > 0 && (k + 1 == p.size() || t.back() - t[k] < tail_m)) {
+        --k;
+    }
+    if (k == 0) {
+        // The whole chain is the stretch: keep only the fit's start pose.
+        return corner_polyline(p, evaluate(fit, 0.0), end, o);
+    }
+    const double s = node_s(fit, p, t, k);
+    const std::vector<Alignment> parts = split_alignment(fit, {s});
+    Alignment out = parts.front();
+    const Pose cut = evaluate(fit, s);
+    const std::vector<Point> tail(p.begin() + static_cast<long>(k), p.end());
+    const Alignment a = corner_polyline(tail, cut, end, o);
+    out.primitives.insert(out.primitives.end(), a.primitives.begin(), a.primitives.end());
+    return out;
+}
+
+Alignment splice_start(const Alignment& fit, const std::vector<Point>& p, const Pose& start, double tail_m,
+                       const CornerFitOptions& o) {
+    const std::vector<double> t = chainage(p);
+    std::size_t k = 0;
+    while (k + 1 < p.size() && (k == 0 || t[k] < tail_m)) {
+        ++k;
+    }
+    if (k + 1 == p.size()) {
+        return corner_polyline(p, start, evaluate(fit, length(fit)), o);
+    }
+    const double s = node_s(fit, p, t, k);
+    const std::vector<Alignment> parts = split_alignment(fit, {s});
+    const std::vector<Point> head(p.begin(), p.begin() + static_cast<long>(k) + 1);
+    Alignment out = corner_polyline(head, start, evaluate(fit, s), o);
+    const auto& rest = parts.back().primitives;
+    out.primitives.insert(out.primitives.end(), rest.begin(), rest.end());
+    return out;
+}
+
+EndMiss start_miss(const Alignment& a, const Pose& start) { return miss(evaluate(a, 0.0), start); }
+
+EndMiss end_miss(const Alignment& a, const Pose& end) { return miss(evaluate(a, length(a)), end); }
+
+} // namespace railodd::geometry

@@ -1,0 +1,30 @@
+#pragma once
+// Making a fitted chain meet a tied end pose exactly: the stretch of the fit
+// next to that end is replaced by the corner construction (corner_fit.hpp)
+// from the fit's own pose where the stretch begins to the tied pose. The rest
+// of the fit is kept as it is, and the joint is G2 because the construction
+// starts (or ends) with the fit's pose and curvature there.
+#include "railodd/geometry/corner_fit.hpp"
+
+#include <vector>
+
+namespace railodd::geometry {
+
+// points: the chain's mapped nodes in order. The spliced stretch covers the
+// nodes within tail_m of the end (at least the last segment).
+Alignment splice_start(const Alignment& fit, const std::vector<Point>& points, const Pose& start, double tail_m,
+                       const CornerFitOptions& options);
+Alignment splice_end(const Alignment& fit, const std::vector<Point>& points, const Pose& end, double tail_m,
+                     const CornerFitOptions& options);
+
+// How far the alignment's end misses a pose: position (m), heading (rad,
+// modulo full turns) and curvature (1/m).
+struct EndMiss {
+    double gap_m = 0.0;
+    double heading_rad = 0.0;
+    double curvature = 0.0;
+};
+EndMiss start_miss(const Alignment& a, const Pose& start);
+EndMiss end_miss(const Alignment& a, const Pose& end);
+
+} // namespace railodd::geometry
