@@ -3,6 +3,7 @@
 #include "railodd/geometry/indexed_alignment.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "chain_fit.hpp"
+#include "tie_splice.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -87,6 +88,7 @@ public:
         for (std::size_t c : order) {
             fit_chain(c);
         }
+        tie_cycles();
         return collect();
     }
 
@@ -102,10 +104,19 @@ private:
         if (!fitted_[t].done) {
             if (in_progress_[t]) {
                 ++untied_;
-                return std::nullopt; // a cycle of branches: leave this end free
+                cycle_ends_.push_back({c, v, at_start});
+                return std::nullopt; // a cycle of branches: free for now, see tie_cycles()
             }
             fit_chain(t);
         }
+        end.tied = true;
+        end.to_chain = t;
+        return branch_pose(c, v, at_start, t);
+    }
+
+    // The through chain t's pose at v, turned round when the branch c leaves
+    // the other way.
+    Pose branch_pose(std::size_t c, std::size_t v, bool at_start, std::size_t t) const {
         const Pose through = evaluate(fitted_[t].alignment, fitted_[t].vertex_s.at(v));
         const ChainGeometry& cg = geometry_[c];
         // The direction the branch runs at v, in its own chain's order.
@@ -117,9 +128,48 @@ private:
             p.hdg += std::numbers::pi;
             p.curvature = -p.curvature;
         }
-        end.tied = true;
-        end.to_chain = t;
         return p;
+    }
+
+    // Branches in a cycle (each tied to a chain that is tied back to it) were
+    // fitted with one end free. Once every chain is fitted, that end's last
+    // stretch is spliced onto its switch's pose, unless a joint of the chain
+    // (where an edge ends or another branch is tied) lies in the stretch:
+    // moving it would break those links instead.
+    void tie_cycles() {
+        constexpr double tail_m = 40.0;  // as chain_fit's splices
+        constexpr double margin_m = 5.0;
+        for (const CycleEnd& ce : cycle_ends_) {
+            FittedChain& f = fitted_[ce.chain];
+            const std::size_t t = through_.at(ce.vertex);
+            const double len = length(f.alignment);
+            const auto in_tail = [&](double s) { return ce.at_start ? s < tail_m + margin_m : s > len - tail_m - margin_m; };
+            if (!fitted_[t].done || len < 2.0 * (tail_m + margin_m) ||
+                std::any_of(f.joint_s.begin(), f.joint_s.end(), in_tail)) {
+                continue;
+            }
+            const Pose p = branch_pose(ce.chain, ce.vertex, ce.at_start, t);
+            const std::vector<Point>& pts = geometry_[ce.chain].points;
+            const CornerFitOptions corners{1000.0, 0.25};
+            Alignment a = ce.at_start ? splice_start(f.alignment, pts, p, tail_m, corners)
+                                      : splice_end(f.alignment, pts, p, tail_m, corners);
+            if (ce.at_start) {
+                // Only the head changed: everything after it moved by the length difference.
+                const double delta = length(a) - len;
+                for (double& s : f.joint_s) {
+                    s += delta;
+                }
+                for (auto& [v, s] : f.vertex_s) {
+                    s += delta;
+                }
+            }
+            f.alignment = std::move(a);
+            ChainEnd& end = ce.at_start ? chains_[ce.chain].start : chains_[ce.chain].end;
+            end.tied = true;
+            end.to_chain = t;
+            --untied_;
+            ++spliced_;
+        }
     }
 
     void fit_chain(std::size_t c) {
@@ -229,6 +279,12 @@ private:
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;
     std::size_t spliced_ = 0;
+    struct CycleEnd {
+        std::size_t chain;
+        std::size_t vertex;
+        bool at_start;
+    };
+    std::vector<CycleEnd> cycle_ends_;
 };
 
 } // namespace

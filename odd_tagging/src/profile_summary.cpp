@@ -114,14 +114,14 @@ ojson count_by(const OddProfile& p, const Kind& k, const std::string& name) {
     return j;
 }
 
-// A stretch written over several roads (a tunnel through a junction's
-// connecting road) is several elements with the same OSM ids: one feature.
+// A stretch written over several roads or tracks (a tunnel through a switch)
+// is several elements with the same OSM ids: one feature.
 std::size_t count(const OddProfile& p, const Kind& k) {
-    std::set<std::pair<std::size_t, std::vector<std::string>>> ranges;
+    std::set<std::vector<std::string>> ranges;
     std::size_t points = 0;
     for (const auto& e : p.elements) {
         if (is(e, k)) {
-            e.point || e.osm_ids.empty() ? ++points : (ranges.insert({e.track, e.osm_ids}), 0);
+            e.point || e.osm_ids.empty() ? ++points : (ranges.insert(e.osm_ids), 0);
         }
     }
     return points + ranges.size();
