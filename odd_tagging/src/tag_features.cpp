@@ -49,6 +49,9 @@ void tag_switches(TagContext& ctx) {
         for (const auto& sw : road.switches) {
             const auto [edge, s0] = road_to_edge.at(road_index.at(sw.main_track.road_id));
             const std::string node = sw.user_data.empty() ? "" : sw.user_data.front().value;
+            if (done.count(node)) {
+                continue; // a slip with two <switch> at one vertex is one switch of the layout
+            }
             const std::int64_t node_id = std::stoll(node.substr(node.find(':') + 1));
             // Running along the main track road with increasing s from the
             // switch point passes the points from the toe.
