@@ -14,6 +14,7 @@
 #include "railodd/xodr/map_builder.hpp"
 #include "railodd/xodr/xml_writer.hpp"
 #include "railodd/odd/profile_outputs.hpp"
+#include "railodd/odd/route.hpp"
 #include "railodd/odd/tagger.hpp"
 #include "railodd/odd/taxonomy.hpp"
 
@@ -61,6 +62,8 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
         ->capture_default_str()
         ->check(CLI::IsMember({"1.6", "1.7", "1.8"}));
     app->add_option("--taxonomy", opt_.taxonomy, "ODD taxonomy for odd_profile.* (default: data/odd/railway_odd.yaml)");
+    app->add_option("--from", opt_.from, "Profile the route from this station (with --to; shortest path)");
+    app->add_option("--to", opt_.to, "Profile the route to this station (with --from)");
     app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
     return app;
 }
@@ -72,6 +75,9 @@ void ConvertCommand::setup() {
     }
     if (!vector && !opt_.field_mapping.empty()) {
         throw UsageError(opt_.input, "--field-mapping applies to GIS vector sources only, not OSM files");
+    }
+    if (opt_.from.empty() != opt_.to.empty()) {
+        throw UsageError(opt_.from.empty() ? "--to" : "--from", "a route needs both --from NAME and --to NAME");
     }
     if (!opt_.bbox.empty()) {
         ingest::parse_bbox(opt_.bbox); // fail before any output directory is touched
@@ -195,6 +201,18 @@ Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::stri
     return g;
 }
 
+// With --from/--to, the profile along the route between the two stations
+// (the map stays the whole selection); the route for report.json.
+std::optional<odd::Route> route_profile(const ConvertOptions& o, const ingest::IngestResult& r, const Geometry& g,
+                                        const odd::Taxonomy& taxonomy, odd::OddProfile& profile) {
+    if (o.from.empty()) {
+        return std::nullopt;
+    }
+    odd::Route route = odd::find_route(g.tracks, g.fitted_tracks, g.attachment, r.features, o.from, o.to);
+    profile = odd::along_route(profile, route, taxonomy);
+    return route;
+}
+
 } // namespace
 
 int ConvertCommand::run() {
@@ -235,8 +253,9 @@ int ConvertCommand::run() {
     // into the map's <userData>.
     timer.start("odd_tagging");
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
-    const odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
+    odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
     odd::add_odd_user_data(profile, map.map);
+    const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, profile);
     const std::string xodr_text = xodr::write_xodr(map.map, mo.revision);
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
@@ -257,6 +276,9 @@ int ConvertCommand::run() {
     report["topology"] = geometry::topology_report(geo.crossings, geo.attachment, result.features);
     report["opendrive"] = xodr::map_report(map, map_input);
     report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
+    if (route) {
+        report["route"] = odd::route_report(*route);
+    }
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);
     }

@@ -27,6 +27,8 @@ struct ConvertOptions {
     bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
     std::string odr_version = "1.7";
     std::string taxonomy; // ODD taxonomy; empty: data/odd/railway_odd.yaml
+    std::string from;     // --from/--to: odd_profile.* along the route between two stations
+    std::string to;
 };
 
 class ConvertCommand : public Command {
