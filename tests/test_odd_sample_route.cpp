@@ -173,3 +173,21 @@ TEST(OddSampleRoute, TagsAreInTheMapUserData) {
     EXPECT_NE(x.find("<userData code=\"odd\" value=\"sc.geo.hz.curve s="), std::string::npos);
     EXPECT_NE(x.find("radius_class="), std::string::npos);
 }
+
+TEST(OddSampleRoute, RoadAlongsideTheStationIsAParallelRoad) {
+    // The sample's village street (way 2000016) runs about 40 m from the main line.
+    std::size_t found = 0;
+    for (const auto& e : run().profile["elements"]) {
+        if (e["odd_element"] != "Scenery/Surroundings/Parallel road") {
+            continue;
+        }
+        const auto& ids = e["osm_ids"];
+        if (std::find(ids.begin(), ids.end(), "way:2000016") != ids.end()) {
+            ++found;
+            EXPECT_NEAR(e["attributes"]["distance"].get<double>(), 40.0, 3.0);
+            EXPECT_EQ(e["attributes"]["distance_class"], "nearby");
+            EXPECT_EQ(e["attributes"]["road_class"], "residential");
+        }
+    }
+    EXPECT_GT(found, 0u);
+}

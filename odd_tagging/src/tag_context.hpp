@@ -57,5 +57,6 @@ void tag_vertical_and_cant(TagContext& ctx); // gradient classes, cant (tag_geom
 void tag_track_count(TagContext& ctx);    // single / double / multiple (tag_track_count.cpp)
 void tag_way_attributes(TagContext& ctx); // gauge, electrification, speed, usage, service, direction (tag_ways.cpp)
 void tag_features(TagContext& ctx);       // switches, crossings, structures, stations, signals, ... (tag_features.cpp)
+void tag_surroundings(TagContext& ctx);   // roads running alongside (tag_surroundings.cpp)
 
 } // namespace railodd::odd
