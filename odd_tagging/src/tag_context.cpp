@@ -83,7 +83,7 @@ std::vector<TaggedAttribute> classified(const Taxonomy& t, const Element& elemen
     for (auto& a : attrs) {
         const Attribute* def = t.attribute(element, a.name);
         const double* v = std::get_if<double>(&a.value);
-        std::string label = def && v ? classify(*def, std::abs(*v)) : "";
+        std::string label = def && v ? classify(*def, *v) : "";
         out.push_back(std::move(a));
         if (!label.empty()) {
             out.push_back({out.back().name + "_class", label});

@@ -3,6 +3,8 @@
 // vertical profile, and cant.
 #include "tag_context.hpp"
 
+#include "railodd/odd/tag_values.hpp"
+
 #include <cmath>
 
 namespace railodd::odd {
@@ -83,6 +85,50 @@ void tag_gradients(TagContext& ctx, std::size_t e, const geometry::VerticalProfi
     }
 }
 
+// Highest parsed maxspeed (km/h) of the ways over [s0, s1]; 0 if none.
+double line_speed(TagContext& ctx, std::size_t e, double s0, double s1) {
+    double v = 0.0;
+    for (const WayRange& r : ctx.ways(e)) {
+        if (r.s1 > s0 && r.s0 < s1) {
+            const MaxSpeed m = parse_maxspeed(ingest::tag_or(r.way->tags, "maxspeed"));
+            v = std::max(v, m.kmh.value_or(0.0));
+        }
+    }
+    return v;
+}
+
+// Cant deficiency on every arc where the line speed is known: the
+// equilibrium cant 11.8 V^2 / R (mm; V km/h, R m, standard gauge) minus the
+// cant there. Arcs with cant carry it on their cant stretch; arcs without get
+// a Cant element of 0 mm so that their deficiency is on the profile too.
+void tag_cant_deficiency(TagContext& ctx, std::size_t e, const std::vector<geometry::CantStretch>& cant,
+                         std::vector<std::vector<TaggedAttribute>>& stretch_extra) {
+    const geometry::Alignment& a = ctx.geo().fitted_tracks.edges[e].alignment;
+    double s = 0.0;
+    for (const auto& p : a.primitives) {
+        const double s0 = s, s1 = s + p.length;
+        s = s1;
+        const double v = p.kind == geometry::PrimitiveKind::arc ? line_speed(ctx, e, s0, s1) : 0.0;
+        if (v <= 0.0 || p.length <= 1e-6) {
+            continue;
+        }
+        const double mid = (s0 + s1) / 2.0;
+        const double cant_mm = 1000.0 * geometry::cant_at(cant, mid);
+        const double deficiency = 11.8 * v * v * std::abs(p.curv_start) - cant_mm;
+        bool carried = false;
+        for (std::size_t i = 0; i < cant.size(); ++i) {
+            if (cant[i].s_start <= mid && mid <= cant[i].s_end && cant[i].cant_start_m == cant[i].cant_end_m) {
+                stretch_extra[i].push_back({"cant_deficiency", deficiency});
+                carried = true;
+            }
+        }
+        if (!carried) {
+            ctx.tag(cant_path, e, s0, s1, {{"cant", cant_mm}, {"cant_deficiency", deficiency}}, ctx.way_ids(e, s0, s1),
+                    "derived");
+        }
+    }
+}
+
 } // namespace
 
 void tag_vertical_and_cant(TagContext& ctx) {
@@ -94,12 +140,15 @@ void tag_vertical_and_cant(TagContext& ctx) {
         if (e < profiles.size() && profiles[e].source != geometry::ElevationSource::flat) {
             tag_gradients(ctx, e, profiles[e]);
         }
-        if (e >= cants.size()) {
-            continue;
-        }
-        for (const auto& c : cants[e]) {
-            const double mm = 1000.0 * std::max(c.cant_start_m, c.cant_end_m);
-            ctx.tag(cant_path, e, c.s_start, c.s_end, {{"cant", mm}}, ctx.way_ids(e, c.s_start, c.s_end),
+        static const std::vector<geometry::CantStretch> none;
+        const auto& cant = e < cants.size() ? cants[e] : none;
+        std::vector<std::vector<TaggedAttribute>> extra(cant.size());
+        tag_cant_deficiency(ctx, e, cant, extra);
+        for (std::size_t i = 0; i < cant.size(); ++i) {
+            const auto& c = cant[i];
+            std::vector<TaggedAttribute> attrs{{"cant", 1000.0 * std::max(c.cant_start_m, c.cant_end_m)}};
+            attrs.insert(attrs.end(), extra[i].begin(), extra[i].end());
+            ctx.tag(cant_path, e, c.s_start, c.s_end, attrs, ctx.way_ids(e, c.s_start, c.s_end),
                     c.estimated ? "derived" : "osm");
         }
     }

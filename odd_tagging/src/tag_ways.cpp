@@ -109,6 +109,31 @@ void tag_direction(TagContext& ctx, std::size_t e, const WayRange& r, const std:
             {{"direction", std::string{to_string(*d.value)}}}, ids, "osm");
 }
 
+// Train protection systems mapped on the way (railway:etcs=<level>,
+// railway:pzb=yes, ...): one element per system present.
+void tag_train_protection(TagContext& ctx, std::size_t e, const WayRange& r, const std::vector<std::string>& ids) {
+    static const char* const systems[] = {"etcs", "lzb", "pzb", "atb", "tvm", "kvb"};
+    for (const char* sys : systems) {
+        const std::string v = ingest::tag_or(r.way->tags, std::string{"railway:"} + sys);
+        if (v.empty() || v == "no") {
+            continue;
+        }
+        std::vector<TaggedAttribute> attrs{{"system", std::string{sys}}};
+        if (std::string{sys} == "etcs") {
+            if (v == "0" || v == "1" || v == "2" || v == "3") {
+                attrs.push_back({"etcs_level", v});
+            } else if (v != "yes") {
+                ctx.unparsed(ids, "railway:etcs", v, "not an ETCS level (0-3) or yes/no");
+                continue;
+            }
+        } else if (v != "yes") {
+            ctx.unparsed(ids, std::string{"railway:"} + sys, v, "expected yes or no");
+            continue;
+        }
+        ctx.tag("Operational Conditions/Train control/Train protection", e, r.s0, r.s1, attrs, ids, "osm");
+    }
+}
+
 } // namespace
 
 void tag_way_attributes(TagContext& ctx) {
@@ -123,6 +148,7 @@ void tag_way_attributes(TagContext& ctx) {
             tag_speed(ctx, e, r, ids);
             tag_usage(ctx, e, r, ids);
             tag_direction(ctx, e, r, ids);
+            tag_train_protection(ctx, e, r, ids);
         }
     }
 }
