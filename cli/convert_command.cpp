@@ -263,7 +263,7 @@ int ConvertCommand::run() {
     // Phase 5: stage every output, then move them into place together.
     OutputStage stage(opt_.outdir);
     stage.write_text("map.xodr", xodr_text);
-    stage.write_text("odd_profile.json", odd::to_json(profile).dump(1) + "\n");
+    stage.write_text("odd_profile.json", odd::to_json_text(profile));
     stage.write_text("odd_profile.geojson", odd::to_geojson(profile));
     stage.write_text("odd_profile.csv", odd::to_csv(profile));
     stage.write_text("ingest.geojson", ingest::to_geojson(result));

@@ -68,6 +68,16 @@ TEST(OddProfileIo, JsonRoundTripKeepsEverythingButGeometry) {
     EXPECT_EQ(to_json(q).dump(1), text); // byte-identical when written again
 }
 
+TEST(OddProfileIo, StreamedTextIsTheSameDocumentAsTheTree) {
+    OddProfile p = sample_profile();
+    p.unparsed.push_back({{"way:7"}, "maxspeed", "walk", "not a number"});
+    p.summary = {{"length_km", 1.5}};
+    EXPECT_EQ(nlohmann::ordered_json::parse(to_json_text(p)), to_json(p));
+    p.elements.clear();
+    p.unparsed.clear();
+    EXPECT_EQ(nlohmann::ordered_json::parse(to_json_text(p)), to_json(p)) << "empty lists stay valid JSON";
+}
+
 TEST(OddProfileIo, ReadingNamesTheFileAndTheMissingKey) {
     const auto dir = scratch_dir();
     auto j = nlohmann::json::parse(to_json(sample_profile()).dump());
