@@ -3,6 +3,7 @@
 #include "convert_command.hpp"
 #include "profile_command.hpp"
 #include "sample_command.hpp"
+#include "scenarios_command.hpp"
 #include "validate_command.hpp"
 
 #include "railodd/util/errors.hpp"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
     commands.push_back(std::make_unique<cli::ConvertCommand>());
     commands.push_back(std::make_unique<cli::ProfileCommand>());
     commands.push_back(std::make_unique<cli::SampleCommand>());
+    commands.push_back(std::make_unique<cli::ScenariosCommand>());
     commands.push_back(std::make_unique<cli::ValidateCommand>());
     std::vector<CLI::App*> subs;
     for (auto& c : commands) {

@@ -41,6 +41,9 @@ ojson element_json(const TaggedElement& e) {
     j["point"] = e.point;
     j["osm_ids"] = e.osm_ids;
     j["source"] = e.source;
+    if (e.reversed) {
+        j["reversed"] = true;
+    }
     return j;
 }
 
@@ -112,6 +115,7 @@ TaggedElement element_from_json(const Json& j, const std::string& where) {
     e.point = get_or<bool>(j, "point", where, false);
     e.osm_ids = get_or<std::vector<std::string>>(j, "osm_ids", where, {});
     e.source = get_or<std::string>(j, "source", where, "");
+    e.reversed = get_or<bool>(j, "reversed", where, false);
     return e;
 }
 
@@ -133,6 +137,9 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
                      {"version", profile.taxonomy_version},
                      {"file", profile.taxonomy_file}};
     j["route"] = {{"description", profile.route}, {"length_m", profile.length_m}, {"tracks", profile.tracks}};
+    if (profile.along_route) {
+        j["route"]["along_route"] = true;
+    }
     ojson elements = ojson::array();
     for (const auto& e : profile.elements) {
         elements.push_back(element_json(e));
@@ -151,8 +158,10 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
 // a whole network's profile (180,000 elements on Cologne) never exists as one
 // JSON tree, and each element sits on its own line.
 std::string to_json_text(const OddProfile& profile) {
-    ojson head = to_json(OddProfile{profile.taxonomy_name, profile.taxonomy_version, profile.taxonomy_file,
-                                    profile.route, profile.length_m, profile.tracks, {}, {}, {}});
+    OddProfile bare{profile.taxonomy_name, profile.taxonomy_version, profile.taxonomy_file,
+                    profile.route, profile.length_m, profile.tracks, {}, {}, {}};
+    bare.along_route = profile.along_route;
+    ojson head = to_json(bare);
     std::string out = "{\n";
     for (const char* key : {"railodd", "taxonomy", "route"}) {
         out += " \"" + std::string{key} + "\": " + head[key].dump() + ",\n";
@@ -184,6 +193,7 @@ OddProfile profile_from(const Json& j) {
     p.route = get_or<std::string>(route, "description", "route", "");
     p.length_m = get<double>(route, "length_m", "route");
     p.tracks = get_or<std::size_t>(route, "tracks", "route", 0);
+    p.along_route = get_or<bool>(route, "along_route", "route", false);
     const auto& elements = required(j, "elements", "");
     if (!elements.is_array()) {
         throw std::invalid_argument("elements: expected an array");

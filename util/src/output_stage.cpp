@@ -35,6 +35,12 @@ fs::path OutputStage::staged_path(std::string_view name) {
     if (std::find(names_.begin(), names_.end(), n) == names_.end()) {
         names_.push_back(n);
     }
+    // Names may hold folders ("catalogs/VehicleCatalog.xosc").
+    std::error_code ec;
+    fs::create_directories((staging_ / n).parent_path(), ec);
+    if (ec) {
+        throw OutputError((staging_ / n).string(), "cannot create directory: " + ec.message());
+    }
     return staging_ / n;
 }
 
@@ -57,6 +63,7 @@ std::vector<fs::path> OutputStage::commit() {
         }
         const fs::path to = outdir_ / name;
         std::error_code ec;
+        fs::create_directories(to.parent_path(), ec);
         fs::rename(from, to, ec);
         if (ec) {
             throw OutputError(to.string(), "cannot move output into place: " + ec.message());

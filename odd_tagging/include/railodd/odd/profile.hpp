@@ -6,11 +6,11 @@
 //
 // odd_profile.json:
 //   {"railodd": {...}, "taxonomy": {"name", "version", "file"},
-//    "route": {"description", "length_m", "tracks"},
+//    "route": {"description", "length_m", "tracks", "along_route" (only when true)},
 //    "elements": [{"odd_element": PATH, "id": TAXONOMY-ID, "attributes": {NAME: number|string|bool, ...},
 //                  "road_id": "12", "s_start": m, "s_end": m, "track": EDGE, "chainage_start": m,
 //                  "chainage_end": m, "point": bool, "osm_ids": ["way:1", "node:2"],
-//                  "source": "osm"|"derived"|"dem"|"osm+derived"}, ...],
+//                  "source": "osm"|"derived"|"dem"|"osm+derived", "reversed": true (only when)}, ...],
 //    "unparsed": [{"osm_ids", "tag", "value", "reason"}],
 //    "summary": {...}}
 // s is along the OpenDRIVE road `road_id`; chainage along the route (the track
@@ -46,6 +46,7 @@ struct TaggedElement {
     std::vector<std::string> osm_ids;
     std::string source;
     std::vector<std::pair<double, double>> lonlat; // geometry for the GeoJSON: a point or the stretch sampled
+    bool reversed = false; // s falls as chainage grows (a route running against the road); JSON key only when true
 
     const AttributeValue* find(const std::string& attribute) const;
 };
@@ -67,6 +68,7 @@ struct OddProfile {
     std::vector<TaggedElement> elements; // by track, then chainage, then element path
     std::vector<Unparsed> unparsed;
     nlohmann::ordered_json summary;      // km per radius / gradient class, counts, speed profile
+    bool along_route = false; // chainage runs along one route (--from/--to, --relation), not per track
 };
 
 nlohmann::ordered_json to_json(const OddProfile& profile);

@@ -1,0 +1,163 @@
+#include "scenarios_command.hpp"
+
+#include "railodd/odd/odd_spec.hpp"
+#include "railodd/odd/profile.hpp"
+#include "railodd/odd/taxonomy.hpp"
+#include "railodd/scenario/catalog.hpp"
+#include "railodd/scenario/coverage.hpp"
+#include "railodd/scenario/generator.hpp"
+#include "railodd/scenario/outputs.hpp"
+#include "railodd/scenario/templates.hpp"
+#include "railodd/util/errors.hpp"
+#include "railodd/util/output_stage.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <regex>
+#include <set>
+
+namespace railodd::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string or_default(const std::string& given, const char* shipped) {
+    return given.empty() ? (fs::path{RAILODD_DATA_DIR} / shipped).string() : given;
+}
+
+// The map's header date, so that the scenario files change only with the map.
+std::string map_date(const fs::path& xodr) {
+    std::ifstream in(xodr, std::ios::binary);
+    if (!in) {
+        throw InputError(xodr.string(), "cannot open the map (run `railodd convert` first)");
+    }
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    std::smatch m;
+    static const std::regex date(R"(<header[^>]*\bdate="(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d)Z?")");
+    return std::regex_search(head, m, date) ? m[1].str() : "2026-01-01T00:00:00";
+}
+
+// Scenario files of an earlier run in the same folder that this run did not
+// write again: removed, so the folder holds exactly what the manifest lists.
+void remove_stale(const fs::path& out, const std::set<std::string>& kept, const nlohmann::json& old) {
+    if (!old.contains("scenarios")) {
+        return;
+    }
+    for (const auto& s : old["scenarios"]) {
+        for (const char* key : {"file", "behavior"}) {
+            const std::string name = s.value(key, "");
+            if (!name.empty() && !kept.contains(name) && name.find('/') == std::string::npos) {
+                std::error_code ec;
+                fs::remove(out / name, ec);
+            }
+        }
+    }
+}
+
+} // namespace
+
+CLI::App* ScenariosCommand::add(CLI::App& parent) {
+    CLI::App* app = parent.add_subcommand(
+        "scenarios", "Generate route-anchored OpenSCENARIO scenarios from templates (docs/scenarios.md)");
+    app->add_option("--map", opt_.map_dir, "Output folder of `railodd convert` (map.xodr, odd_profile.json)")
+        ->required();
+    app->add_option("-o,--output", opt_.out_dir, "Folder for the scenarios")->required();
+    app->add_option("--templates", opt_.templates, "Base-scenario templates (default: data/scenario/templates.yaml)");
+    app->add_option("--catalog", opt_.catalog, "Asset catalog (default: data/scenario/assets.yaml)");
+    app->add_option("--taxonomy", opt_.taxonomy, "ODD taxonomy (default: data/odd/railway_odd.yaml)");
+    app->add_option("--odd-spec", opt_.odd_spec, "Declared ODD: coverage.json also lists its gaps");
+    app->add_option("--strategy", opt_.strategy, "full, pairwise or random")->capture_default_str();
+    app->add_option("--count", opt_.count, "Scenarios per template (random: required; others: at most)");
+    app->add_option("--seed", opt_.seed, "Seed of the random strategy")->capture_default_str();
+    app->add_option("--max-anchors", opt_.max_anchors, "Anchors per template, spread along the route (0: all)")
+        ->capture_default_str();
+    app->add_option("--osc-version", opt_.osc_version, "OpenSCENARIO version: 1.1, 1.2 or 1.3")->capture_default_str();
+    app->add_flag("-q,--quiet", opt_.quiet, "Do not print the coverage table");
+    return app;
+}
+
+void ScenariosCommand::setup() {
+    try {
+        scenario::strategy_from(opt_.strategy);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--strategy", e.what());
+    }
+    if (opt_.strategy == "random" && opt_.count == 0) {
+        throw UsageError("--count", "the random strategy needs --count N (N > 0)");
+    }
+    if (opt_.osc_version != "1.1" && opt_.osc_version != "1.2" && opt_.osc_version != "1.3") {
+        throw UsageError("--osc-version", "'" + opt_.osc_version + "' is not 1.1, 1.2 or 1.3");
+    }
+    osc_minor_ = opt_.osc_version.back() - '0';
+    if (!fs::is_directory(opt_.map_dir)) {
+        throw InputError(opt_.map_dir, "not a folder (give the output folder of `railodd convert`)");
+    }
+}
+
+int ScenariosCommand::run() {
+    // Read the map: its ODD profile, where it lies and its date
+    const fs::path map_dir{opt_.map_dir};
+    const odd::OddProfile profile = odd::read_profile(map_dir / "odd_profile.json");
+    const fs::path xodr = map_dir / "map.xodr";
+    const std::string date = map_date(xodr);
+
+    // Read the taxonomy, the catalog and the templates, each checked against the ones before
+    const std::string taxonomy_file = or_default(opt_.taxonomy, "odd/railway_odd.yaml");
+    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_file);
+    const std::string catalog_file = or_default(opt_.catalog, "scenario/assets.yaml");
+    const scenario::Catalog catalog = scenario::load_catalog(catalog_file, taxonomy);
+    const std::string templates_file = or_default(opt_.templates, "scenario/templates.yaml");
+    const scenario::TemplateSet templates = scenario::load_templates(templates_file, taxonomy, catalog);
+    std::optional<odd::OddSpec> spec;
+    if (!opt_.odd_spec.empty()) {
+        spec = odd::load_odd_spec(opt_.odd_spec, taxonomy);
+    }
+
+    // Anchor the templates on the route and instantiate them
+    OutputStage stage(opt_.out_dir);
+    const fs::path out = fs::absolute(opt_.out_dir).lexically_normal();
+    scenario::GenerateOptions gen;
+    gen.strategy = scenario::strategy_from(opt_.strategy);
+    gen.count = opt_.count;
+    gen.seed = opt_.seed;
+    gen.max_anchors = opt_.max_anchors;
+    gen.map_file = fs::absolute(xodr).lexically_normal().lexically_relative(out).generic_string();
+    gen.date = date;
+    const scenario::Generation generation = scenario::generate(profile, templates, catalog, taxonomy, gen);
+
+    // Coverage of the route's ODD (and the declared one)
+    const scenario::Coverage coverage =
+        scenario::compute_coverage(profile, taxonomy, generation, spec ? &*spec : nullptr);
+
+    // Write everything, then move it into place
+    scenario::OutputInfo info{map_dir.string(), gen.map_file, taxonomy_file, catalog_file, templates_file,
+                              opt_.odd_spec, gen.strategy, opt_.count, opt_.seed, osc_minor_, date};
+    nlohmann::json old;
+    if (std::ifstream in(out / "manifest.json"); in) {
+        old = nlohmann::json::parse(in, nullptr, false);
+    }
+    scenario::write_scenario_set(stage, generation, coverage, profile, info);
+    stage.commit();
+    std::set<std::string> kept;
+    for (const auto& s : generation.scenarios) {
+        kept.insert(s.scenario.id + ".xosc");
+        kept.insert(s.scenario.id + ".behavior.yaml");
+    }
+    if (!old.is_discarded()) {
+        remove_stale(out, kept, old);
+    }
+    if (!opt_.quiet) {
+        std::cout << scenario::coverage_table(coverage);
+    }
+    std::cout << "wrote " << generation.scenarios.size() << " scenarios to " << opt_.out_dir << '\n';
+    return exit_ok;
+}
+
+} // namespace railodd::cli

@@ -1,0 +1,76 @@
+#pragma once
+// Anchoring templates on the real route (docs/scenarios.md "Anchors"): the
+// places where the ODD profile satisfies a template's infrastructure
+// requirement, and the lane positions along the track around them.
+#include "railodd/odd/profile.hpp"
+#include "railodd/scenario/concrete.hpp"
+#include "railodd/scenario/templates.hpp"
+
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace railodd::scenario {
+
+// Chainage to lane positions. A line is one track (graph edge) of a whole-map
+// profile, or the whole route of a route profile; the horizontal-geometry
+// elements tile every line, so they carry the road and s of each chainage.
+class LineIndex {
+public:
+    explicit LineIndex(const odd::OddProfile& profile);
+
+    std::size_t line_of(const odd::TaggedElement& e) const { return along_route_ ? 0 : e.track; }
+    bool has_line(std::size_t line) const { return lines_.contains(line); }
+    double start(std::size_t line) const;
+    double end(std::size_t line) const;
+    // The rail lane's centre at `chainage`, facing the direction of growing chainage.
+    std::optional<LanePlacement> at(std::size_t line, double chainage) const;
+    // Waypoints from c0 to c1: both ends and the middle of every road run between.
+    std::vector<LanePlacement> waypoints(std::size_t line, double c0, double c1) const;
+
+private:
+    struct Piece {
+        double c0, c1;
+        std::string road_id;
+        double s0, s1;
+        bool reversed;
+    };
+    bool along_route_ = false;
+    std::map<std::size_t, std::vector<Piece>> lines_; // by chainage
+    const Piece* piece(std::size_t line, double chainage) const;
+};
+
+struct Anchor {
+    std::size_t element = 0;          // index into profile.elements
+    std::vector<std::size_t> context; // per context requirement: the matched element
+    std::size_t line = 0;
+    double chainage = 0.0;            // the anchor point
+    LanePlacement place;
+    double start_chainage = 0.0;      // the ego's start ...
+    double end_chainage = 0.0;        // ... and end of its run
+    double speed_limit_kmh = std::numeric_limits<double>::quiet_NaN(); // at the anchor; NaN: unknown
+};
+
+struct SkippedAnchor {
+    std::size_t element = 0;
+    std::string reason;
+};
+
+struct Anchoring {
+    std::vector<Anchor> anchors; // by line, then chainage
+    std::vector<SkippedAnchor> skipped;
+};
+
+// Whether the element is `match.element` or below it and satisfies its conditions.
+bool matches(const odd::TaggedElement& e, const ElementMatch& match);
+
+// Every place on the profile where the template's anchor and context
+// requirements hold, the ego travelling in the direction of growing chainage.
+// Anchors with less than the template's minimum run-up before them are skipped
+// with the reason.
+Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, const Template& t);
+
+} // namespace railodd::scenario

@@ -1,0 +1,72 @@
+#pragma once
+// `railodd scenarios`: templates x anchors on the route x parameter rows ->
+// concrete scenarios with their traceability records (docs/scenarios.md).
+#include "railodd/odd/odd_spec.hpp"
+#include "railodd/odd/profile.hpp"
+#include "railodd/odd/taxonomy.hpp"
+#include "railodd/scenario/anchors.hpp"
+#include "railodd/scenario/catalog.hpp"
+#include "railodd/scenario/concrete.hpp"
+#include "railodd/scenario/strategies.hpp"
+#include "railodd/scenario/templates.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace railodd::scenario {
+
+struct GenerateOptions {
+    Strategy strategy = Strategy::pairwise;
+    std::size_t count = 0;     // random: rows per template (required); full / pairwise: 0 = all
+    std::uint64_t seed = 1;
+    std::size_t max_anchors = 0; // per template, spread evenly along the route; 0 = all
+    std::string map_file;        // LogicFile path as the .xosc files will reference it
+    std::string catalog_dir = "catalogs";
+    std::string date = "2026-01-01T00:00:00"; // FileHeader date (the map's)
+};
+
+// One ODD element and attribute value a scenario exercises.
+struct CoveredValue {
+    std::string element;   // taxonomy path
+    std::string attribute; // empty: the element itself
+    std::string value;     // as text
+    std::string value_class; // bin label, enum value
+    std::string source;    // "map", "asset", "perturbation", "parameter"
+};
+
+struct ScenarioRecord {
+    ConcreteScenario scenario;
+    std::string template_id;
+    std::vector<std::pair<std::string, std::string>> values; // placeholder -> value text (as in the text)
+    std::vector<std::pair<std::string, std::string>> raw;    // placeholder -> raw value (number, asset id)
+    Anchor anchor;
+    std::vector<std::pair<std::string, std::string>> assets; // actor -> asset id
+    std::vector<CoveredValue> odd_elements;
+    std::string speed_basis; // "parameter", "speed limit", "asset max speed"
+};
+
+struct TemplateRun {
+    std::string template_id;
+    std::size_t anchors = 0;
+    std::vector<SkippedAnchor> skipped;
+    std::vector<std::string> dimensions;  // "anchor", then the varied parameters
+    std::vector<std::size_t> sizes;
+    std::size_t rows = 0;
+    PairStats pairs;
+};
+
+struct Generation {
+    std::vector<ScenarioRecord> scenarios; // by template, then row
+    std::vector<TemplateRun> runs;
+    std::vector<Actor> catalog_entries;    // every asset used, for the OpenSCENARIO catalogs
+};
+
+// Throws railodd::InputError when the profile has no track geometry, and
+// std::invalid_argument for a random strategy without a count.
+Generation generate(const odd::OddProfile& profile, const TemplateSet& templates, const Catalog& catalog,
+                    const odd::Taxonomy& taxonomy, const GenerateOptions& options);
+
+} // namespace railodd::scenario

@@ -1,0 +1,48 @@
+#pragma once
+// Instantiation strategies over a template's parameter dimensions
+// (docs/scenarios.md "Strategies"): full factorial, pairwise (every feasible
+// pair of values in some row, with few rows) and seeded random. Rows are
+// value indices per dimension; a validity predicate encodes the constraints.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace railodd::scenario {
+
+enum class Strategy { full, pairwise, random };
+const char* to_string(Strategy s);
+Strategy strategy_from(const std::string& name); // throws std::invalid_argument
+
+using Row = std::vector<std::size_t>;
+// A row being built: kUnset where no value is chosen yet.
+inline constexpr std::size_t kUnset = static_cast<std::size_t>(-1);
+// Whether a (partial) row can still be valid: constraints whose dimensions are
+// not all set must not refuse it.
+using Validity = std::function<bool(const Row& partial)>;
+
+struct PairStats {
+    std::size_t feasible = 0;   // value pairs some valid row can hold
+    std::size_t covered = 0;    // of them, pairs the rows hold
+    std::size_t infeasible = 0; // pairs the constraints exclude
+};
+
+// All valid rows in lexicographic order. Throws std::length_error when the
+// product exceeds `limit` rows.
+std::vector<Row> full_factorial(const std::vector<std::size_t>& sizes, const Validity& valid,
+                                std::size_t limit = 1000000);
+
+// A greedy covering array of strength 2 (AETG-style, deterministic): every
+// pair of values of two dimensions that a valid row can hold is in some row.
+std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity& valid);
+
+// `count` distinct valid rows drawn uniformly with a 64-bit Mersenne Twister
+// seeded with `seed` (fewer when fewer exist); the same on every platform.
+std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t count,
+                             std::uint64_t seed);
+
+// Pairs covered by `rows` against the feasible pairs.
+PairStats pair_coverage(const std::vector<std::size_t>& sizes, const Validity& valid, const std::vector<Row>& rows);
+
+} // namespace railodd::scenario

@@ -1,0 +1,133 @@
+// Placeholders become text (number with unit and class, asset names), the
+// varied values become OpenSCENARIO parameters so that a
+// ParameterValueDistribution can vary them, and perturbations set the
+// environment.
+#include "attribute_values.hpp"
+#include "environment.hpp"
+#include "instantiate.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace railodd::scenario {
+
+namespace {
+
+namespace pn = parameter_names;
+
+std::string with_unit(const std::string& value, const std::string& unit) {
+    return unit.empty() ? value : value + " " + unit;
+}
+
+// The text and raw value of a map-bound placeholder at the anchor.
+std::pair<std::string, std::string> map_value(const TemplateContext& ctx, const ParameterDomain& p, const Anchor& a) {
+    const std::size_t i = p.context < 0 ? a.element : a.context[static_cast<std::size_t>(p.context)];
+    const auto* v = ctx.profile.elements[i].find(p.attribute);
+    if (!v) {
+        return {"unknown " + p.attribute, ""};
+    }
+    if (const double* x = std::get_if<double>(v)) {
+        const auto raw = format_number(std::round(*x * 10.0) / 10.0);
+        return {with_unit(raw, p.unit), raw};
+    }
+    if (const bool* b = std::get_if<bool>(v)) {
+        return {*b ? "true" : "false", *b ? "true" : "false"};
+    }
+    return {std::get<std::string>(*v), std::get<std::string>(*v)};
+}
+
+void declare(ConcreteScenario& sc, const char* name, const std::string& type, const std::string& value) {
+    for (const auto& p : sc.parameters) {
+        if (p.name == name) {
+            return;
+        }
+    }
+    sc.parameters.push_back({name, type, value});
+}
+
+std::string fixed(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.6f", v);
+    std::string s = buf;
+    s.erase(s.find_last_not_of('0') + 1);
+    if (s.back() == '.') {
+        s.pop_back();
+    }
+    return s;
+}
+
+// The OpenSCENARIO parameters a perturbation drives, so a distribution can vary them.
+void declare_environment(ConcreteScenario& sc, const std::string& element_id, const std::string& attribute) {
+    const Environment& e = sc.environment;
+    if (element_id == "en.wx.rain" || element_id == "en.wx.snow") {
+        declare(sc, pn::precipitation_type, "string", e.precipitation);
+        declare(sc, pn::precipitation_intensity, "double", fixed(e.precipitation_intensity_mm_h));
+    } else if (element_id == "en.pt.fog" || element_id == "en.pt.dust" || element_id == "en.pt.smoke") {
+        declare(sc, pn::fog_visual_range, "double", fixed(e.fog_visual_range_m));
+    } else if (element_id == "en.il.time") {
+        if (attribute == "period") {
+            declare(sc, pn::time_of_day, "dateTime", e.date_time);
+            declare(sc, pn::sun_azimuth, "double", fixed(e.sun_azimuth_rad));
+        }
+        declare(sc, pn::sun_elevation, "double", fixed(e.sun_elevation_rad));
+    } else if (element_id == "en.rs.head") {
+        declare(sc, pn::friction_scale, "double", fixed(e.friction_scale));
+    }
+}
+
+} // namespace
+
+void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed& speed, ScenarioRecord& rec) {
+    ConcreteScenario& sc = rec.scenario;
+    declare(sc, pn::ego_speed, "double", fixed(sc.ego.speed_mps));
+    for (const auto& p : ctx.tmpl.parameters) {
+        std::size_t dim = 0;
+        while (dim < ctx.varied.size() && &ctx.tmpl.parameters[ctx.varied[dim]] != &p) {
+            ++dim;
+        }
+        const std::string raw = dim < ctx.varied.size() ? p.values[row[dim + 1]] : "";
+        switch (p.kind) {
+        case ParameterKind::ego_speed:
+            rec.values.emplace_back(p.name, format_number(std::round(speed.kmh)) + " km/h");
+            rec.raw.emplace_back(p.name, format_number(speed.kmh));
+            break;
+        case ParameterKind::actor_asset: {
+            const Asset& asset = *ctx.catalog.find(raw);
+            rec.values.emplace_back(p.name, asset.name);
+            rec.raw.emplace_back(p.name, asset.id);
+            declare(sc, (p.actor + "Asset").c_str(), "string", asset.osc_entry);
+            break;
+        }
+        case ParameterKind::map_value: {
+            const auto [text, value] = map_value(ctx, p, rec.anchor);
+            rec.values.emplace_back(p.name, text);
+            rec.raw.emplace_back(p.name, value);
+            break;
+        }
+        case ParameterKind::perturbation: {
+            const odd::Element* el = ctx.taxonomy.find(p.element);
+            const odd::Attribute* attr = ctx.taxonomy.attribute(*el, p.attribute);
+            apply_perturbation(sc.environment, el->id, p.attribute, raw);
+            declare_environment(sc, el->id, p.attribute);
+            const std::string klass = value_class(*attr, raw);
+            rec.values.emplace_back(p.name, attr->type == odd::AttributeType::number && klass != raw
+                                                ? with_unit(raw, p.unit) + " (" + klass + ")"
+                                                : with_unit(raw, p.unit));
+            rec.raw.emplace_back(p.name, raw);
+            rec.odd_elements.push_back({p.element, "", "", "", "perturbation"});
+            rec.odd_elements.push_back({p.element, p.attribute, raw, klass, "perturbation"});
+            break;
+        }
+        }
+    }
+    std::string text = ctx.tmpl.text;
+    for (const auto& [name, value] : rec.values) {
+        const std::string key = "{" + name + "}";
+        for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size())) {
+            text.replace(at, key.size(), value);
+        }
+    }
+    sc.description = text;
+}
+
+} // namespace railodd::scenario

@@ -1,0 +1,144 @@
+// Template by template: anchors on the route form the first dimension, the
+// varied parameters the others; the strategy picks rows that respect the
+// constraints, and every row becomes one scenario.
+#include "railodd/scenario/generator.hpp"
+
+#include "attribute_values.hpp"
+#include "instantiate.hpp"
+#include "railodd/util/errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+
+namespace railodd::scenario {
+
+namespace {
+
+// Anchors spread evenly along the list when there are more than `max`.
+std::vector<Anchor> thin(std::vector<Anchor> anchors, std::size_t max) {
+    if (max == 0 || anchors.size() <= max) {
+        return anchors;
+    }
+    std::vector<Anchor> out;
+    for (std::size_t i = 0; i < max; ++i) {
+        const std::size_t k = max == 1 ? 0 : (i * (anchors.size() - 1) + (max - 1) / 2) / (max - 1);
+        out.push_back(anchors[k]);
+    }
+    return out;
+}
+
+bool set(const Row& r, std::size_t d) { return r[d] != kUnset; }
+
+// The constraints of a template on a (partial) row.
+Validity validity(const TemplateContext& ctx) {
+    return [&ctx](const Row& r) {
+        const Template& t = ctx.tmpl;
+        for (std::size_t d = 0; d < ctx.varied.size(); ++d) {
+            const ParameterDomain& p = t.parameters[ctx.varied[d]];
+            if (p.kind != ParameterKind::ego_speed || !set(r, 0) || !set(r, d + 1)) {
+                continue;
+            }
+            const Anchor& a = ctx.anchors[r[0]];
+            const double kmh = p.limit_fractions.empty() ? *parse_number(p.values[r[d + 1]])
+                                                         : p.limit_fractions[r[d + 1]] * a.speed_limit_kmh;
+            if (t.speed_within_limit && std::isfinite(a.speed_limit_kmh) && kmh > a.speed_limit_kmh + 1e-9) {
+                return false;
+            }
+            // A train cannot run faster than it can: checked once its asset is chosen.
+            bool ego_chosen = true;
+            for (std::size_t e = 0; e < ctx.varied.size(); ++e) {
+                const ParameterDomain& q = t.parameters[ctx.varied[e]];
+                ego_chosen = ego_chosen && !(q.kind == ParameterKind::actor_asset && q.actor == "Ego" && !set(r, e + 1));
+            }
+            if (ego_chosen && std::isfinite(kmh) && kmh > asset_for(ctx, r, "Ego").max_speed_mps * 3.6 + 1e-9) {
+                return false;
+            }
+        }
+        for (const auto& x : t.exclusions) {
+            bool all = true;
+            for (const auto& [name, value] : x.values) {
+                std::size_t d = 0;
+                while (d < ctx.varied.size() && t.parameters[ctx.varied[d]].name != name) {
+                    ++d;
+                }
+                all = all && d < ctx.varied.size() && set(r, d + 1) &&
+                      t.parameters[ctx.varied[d]].values[r[d + 1]] == value;
+            }
+            if (all) {
+                return false;
+            }
+        }
+        return true;
+    };
+}
+
+std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity& valid, const GenerateOptions& o) {
+    std::vector<Row> rows;
+    switch (o.strategy) {
+    case Strategy::full: rows = full_factorial(sizes, valid); break;
+    case Strategy::pairwise: rows = pairwise(sizes, valid); break;
+    case Strategy::random: rows = random_rows(sizes, valid, o.count, o.seed); break;
+    }
+    if (o.count > 0 && rows.size() > o.count) {
+        rows.resize(o.count);
+    }
+    return rows;
+}
+
+std::string scenario_id(const std::string& tmpl, std::size_t n) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "_%04zu", n);
+    return tmpl + buf;
+}
+
+} // namespace
+
+Generation generate(const odd::OddProfile& profile, const TemplateSet& templates, const Catalog& catalog,
+                    const odd::Taxonomy& taxonomy, const GenerateOptions& options) {
+    if (options.strategy == Strategy::random && options.count == 0) {
+        throw std::invalid_argument("the random strategy needs a count (--count N)");
+    }
+    const LineIndex lines(profile);
+    Generation out;
+    std::set<std::string> used_assets;
+    for (const Template& t : templates.templates) {
+        Anchoring anchoring = find_anchors(profile, lines, t);
+        const std::vector<Anchor> anchors = thin(std::move(anchoring.anchors), options.max_anchors);
+        TemplateContext ctx{profile, lines, t, catalog, taxonomy, options, anchors, {}};
+        TemplateRun run;
+        run.template_id = t.id;
+        run.anchors = anchors.size();
+        run.skipped = std::move(anchoring.skipped);
+        run.dimensions.push_back("anchor");
+        run.sizes.push_back(anchors.size());
+        for (std::size_t i = 0; i < t.parameters.size(); ++i) {
+            if (t.parameters[i].kind != ParameterKind::map_value) {
+                ctx.varied.push_back(i);
+                run.dimensions.push_back(t.parameters[i].name);
+                run.sizes.push_back(t.parameters[i].values.size());
+            }
+        }
+        const Validity valid = validity(ctx);
+        const std::vector<Row> rows = rows_for(run.sizes, valid, options);
+        run.rows = rows.size();
+        run.pairs = pair_coverage(run.sizes, valid, rows);
+        for (std::size_t n = 0; n < rows.size(); ++n) {
+            out.scenarios.push_back(instantiate(ctx, rows[n], scenario_id(t.id, n + 1)));
+            for (const auto& [actor, id] : out.scenarios.back().assets) {
+                used_assets.insert(id);
+            }
+        }
+        out.runs.push_back(std::move(run));
+    }
+    for (const auto& a : catalog.assets) {
+        if (used_assets.contains(a.id)) {
+            out.catalog_entries.push_back(actor_from(a, a.id));
+        }
+    }
+    return out;
+}
+
+} // namespace railodd::scenario

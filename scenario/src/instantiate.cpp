@@ -1,0 +1,201 @@
+// One concrete scenario: the ego starts on the rail lane before the anchor and
+// runs through it along the track; the other actors stand where the template
+// puts them relative to the anchor and move when the ego comes near.
+#include "instantiate.hpp"
+
+#include "attribute_values.hpp"
+#include "environment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace railodd::scenario {
+
+namespace {
+
+constexpr double platform_edge_m = 2.0;  // from the track centre: the edge is ~1.7 m (EBO), people stand just behind it
+constexpr double beside_track_m = 3.5;   // beyond the clearance gauge
+constexpr double crossing_approach_m = 10.0; // on the road, short of the barriers
+constexpr double fallback_speed_kmh = 80.0;
+
+const ParameterDomain* varied_param(const TemplateContext& ctx, const Row& row, std::size_t dim, std::size_t& value) {
+    if (dim + 1 >= row.size() || row[dim + 1] == kUnset) {
+        return nullptr;
+    }
+    value = row[dim + 1];
+    return &ctx.tmpl.parameters[ctx.varied[dim]];
+}
+
+// The side a platform is on, from the anchor or a context element.
+double side_sign(const TemplateContext& ctx, const Anchor& a) {
+    std::vector<std::size_t> elements{a.element};
+    elements.insert(elements.end(), a.context.begin(), a.context.end());
+    for (const auto i : elements) {
+        if (const auto* v = ctx.profile.elements[i].find("side"); v && std::holds_alternative<std::string>(*v)) {
+            return std::get<std::string>(*v) == "left" ? 1.0 : -1.0;
+        }
+    }
+    return -1.0;
+}
+
+double lateral_offset(Lateral l, double side) {
+    switch (l) {
+    case Lateral::on_track: return 0.0;
+    case Lateral::platform_edge: return side * platform_edge_m;
+    case Lateral::beside_track: return side * beside_track_m;
+    case Lateral::crossing_approach: return side * crossing_approach_m;
+    }
+    return 0.0;
+}
+
+std::string value_text(const odd::AttributeValue& v) {
+    if (const double* x = std::get_if<double>(&v)) {
+        return format_number(std::round(*x * 10.0) / 10.0);
+    }
+    if (const bool* b = std::get_if<bool>(&v)) {
+        return *b ? "true" : "false";
+    }
+    return std::get<std::string>(v);
+}
+
+// Every taxonomy attribute of a profile element as a covered value.
+void cover_element(const TemplateContext& ctx, const odd::TaggedElement& e, std::vector<CoveredValue>& out) {
+    out.push_back({e.element, "", "", "", "map"});
+    const odd::Element* el = ctx.taxonomy.find(e.element);
+    for (const auto& attr : e.attributes) {
+        const odd::Attribute* a = el ? ctx.taxonomy.attribute(*el, attr.name) : nullptr;
+        if (a) {
+            const auto text = std::holds_alternative<double>(attr.value) ? format_number(std::get<double>(attr.value))
+                                                                         : value_text(attr.value);
+            out.push_back({e.element, attr.name, text, value_class(*a, text), "map"});
+        }
+    }
+}
+
+void cover_asset(const TemplateContext& ctx, const Asset& asset, std::vector<CoveredValue>& out) {
+    out.push_back({asset.element, "", asset.id, "", "asset"});
+    const odd::Element* el = ctx.taxonomy.find(asset.element);
+    for (const auto& [name, value] : asset.attributes) {
+        const odd::Attribute* a = ctx.taxonomy.attribute(*el, name);
+        out.push_back({asset.element, name, value, a ? value_class(*a, value) : value, "asset"});
+    }
+}
+
+// The map's part of a scenario: the anchor, its context and every stretch of
+// track the anchor point lies on (speed limit, gradient, track count, ...).
+void cover_map(const TemplateContext& ctx, const Anchor& a, std::vector<CoveredValue>& out) {
+    cover_element(ctx, ctx.profile.elements[a.element], out);
+    for (const auto i : a.context) {
+        cover_element(ctx, ctx.profile.elements[i], out);
+    }
+    for (std::size_t i = 0; i < ctx.profile.elements.size(); ++i) {
+        const auto& e = ctx.profile.elements[i];
+        if (i != a.element && !e.point && ctx.lines.line_of(e) == a.line && e.chainage_start <= a.chainage &&
+            e.chainage_end >= a.chainage && std::find(a.context.begin(), a.context.end(), i) == a.context.end()) {
+            cover_element(ctx, e, out);
+        }
+    }
+}
+
+Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asset& asset, const Anchor& a, double side) {
+    Actor actor = actor_from(asset, t.name);
+    const auto at = ctx.lines.at(a.line, std::clamp(a.chainage + t.along_m, a.start_chainage, a.end_chainage));
+    actor.start = at.value_or(a.place);
+    actor.start.offset = lateral_offset(t.place, side);
+    if (t.move_to) {
+        LanePlacement target = actor.start;
+        target.offset = lateral_offset(*t.move_to, side);
+        actor.target = target;
+        actor.target_speed_mps = t.move_speed_kmh / 3.6;
+    }
+    if (!t.behaviour.empty()) {
+        actor.properties.emplace_back("behaviour", t.behaviour);
+    }
+    return actor;
+}
+
+} // namespace
+
+const Asset& asset_for(const TemplateContext& ctx, const Row& row, const std::string& actor) {
+    for (std::size_t d = 0; d < ctx.varied.size(); ++d) {
+        std::size_t v = 0;
+        const ParameterDomain* p = varied_param(ctx, row, d, v);
+        if (p && p->kind == ParameterKind::actor_asset && p->actor == actor) {
+            return *ctx.catalog.find(p->values[v]);
+        }
+    }
+    std::string klass = ctx.tmpl.ego.asset_class;
+    for (const auto& a : ctx.tmpl.actors) {
+        klass = a.name == actor ? a.asset_class : klass;
+    }
+    return *ctx.catalog.under(klass).front();
+}
+
+EgoSpeed ego_speed_for(const TemplateContext& ctx, const Row& row) {
+    const Anchor& a = ctx.anchors[row[0]];
+    for (std::size_t d = 0; d < ctx.varied.size(); ++d) {
+        std::size_t v = 0;
+        const ParameterDomain* p = varied_param(ctx, row, d, v);
+        if (!p || p->kind != ParameterKind::ego_speed) {
+            continue;
+        }
+        if (p->limit_fractions.empty()) {
+            return {*parse_number(p->values[v]), "parameter"};
+        }
+        if (std::isfinite(a.speed_limit_kmh)) {
+            return {p->limit_fractions[v] * a.speed_limit_kmh, "speed limit"};
+        }
+        return {p->limit_fractions[v] * asset_for(ctx, row, "Ego").max_speed_mps * 3.6, "asset max speed"};
+    }
+    if (std::isfinite(a.speed_limit_kmh)) { // no speed parameter: run at the line speed
+        return {a.speed_limit_kmh, "speed limit"};
+    }
+    return {fallback_speed_kmh, "default"};
+}
+
+ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std::string& id) {
+    ScenarioRecord rec;
+    rec.template_id = ctx.tmpl.id;
+    rec.anchor = ctx.anchors[row[0]];
+    const Anchor& a = rec.anchor;
+    ConcreteScenario& sc = rec.scenario;
+    sc.id = id;
+    sc.date = ctx.options.date;
+    sc.map_file = ctx.options.map_file;
+    sc.catalog_dir = ctx.options.catalog_dir;
+
+    const EgoSpeed speed = ego_speed_for(ctx, row);
+    rec.speed_basis = speed.basis;
+    const Asset& ego_asset = asset_for(ctx, row, "Ego");
+    sc.ego = actor_from(ego_asset, "Ego");
+    sc.ego.start = ctx.lines.at(a.line, a.start_chainage).value_or(a.place);
+    sc.ego.route = ctx.lines.waypoints(a.line, a.start_chainage, a.end_chainage);
+    sc.ego.speed_mps = speed.kmh / 3.6;
+    sc.ego_end = ctx.lines.at(a.line, a.end_chainage);
+    sc.stop_time_s = std::ceil((a.end_chainage - a.start_chainage) / std::max(sc.ego.speed_mps, 1.0)) + 30.0;
+    rec.assets.emplace_back("Ego", ego_asset.id);
+    cover_asset(ctx, ego_asset, rec.odd_elements);
+    rec.odd_elements.push_back({"Dynamic Elements/Rail vehicle/Ego train", "speed", format_number(speed.kmh),
+                                value_class(*ctx.taxonomy.attribute(*ctx.taxonomy.find("Dynamic Elements/Rail vehicle/Ego train"), "speed"),
+                                            format_number(speed.kmh)),
+                                "parameter"});
+
+    const double side = side_sign(ctx, a);
+    double trigger = std::numeric_limits<double>::infinity();
+    for (const auto& t : ctx.tmpl.actors) {
+        const Asset& asset = asset_for(ctx, row, t.name);
+        sc.others.push_back(place_actor(ctx, t, asset, a, side));
+        rec.assets.emplace_back(t.name, asset.id);
+        cover_asset(ctx, asset, rec.odd_elements);
+        if (t.move_to) {
+            trigger = std::min(trigger, std::max(0.0, a.chainage - a.start_chainage - t.trigger_before_m));
+        }
+    }
+    sc.trigger_distance_m = std::isfinite(trigger) ? trigger : 0.0;
+    cover_map(ctx, a, rec.odd_elements);
+    fill_parameters(ctx, row, speed, rec);
+    return rec;
+}
+
+} // namespace railodd::scenario

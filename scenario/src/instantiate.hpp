@@ -1,0 +1,41 @@
+#pragma once
+// Turning one row of parameter values at one anchor into a concrete scenario
+// and its traceability record. Internal to the scenario library.
+#include "railodd/scenario/generator.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace railodd::scenario {
+
+// What a template run knows while it instantiates rows.
+struct TemplateContext {
+    const odd::OddProfile& profile;
+    const LineIndex& lines;
+    const Template& tmpl;
+    const Catalog& catalog;
+    const odd::Taxonomy& taxonomy;
+    const GenerateOptions& options;
+    const std::vector<Anchor>& anchors;
+    std::vector<std::size_t> varied; // indices into tmpl.parameters of dimensions 1..n (0 is the anchor)
+};
+
+// The ego's speed in km/h for a row, and what it was derived from.
+struct EgoSpeed {
+    double kmh = 0.0;
+    std::string basis;
+};
+
+// The asset an actor gets in a row: its asset parameter's value, else the
+// first asset of its class.
+const Asset& asset_for(const TemplateContext& ctx, const Row& row, const std::string& actor);
+EgoSpeed ego_speed_for(const TemplateContext& ctx, const Row& row);
+
+// The row's placeholder values, the scenario text, the declared OpenSCENARIO
+// parameters, the environment from the perturbations and their coverage.
+void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed& speed, ScenarioRecord& rec);
+
+ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std::string& id);
+
+} // namespace railodd::scenario

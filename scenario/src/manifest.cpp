@@ -1,0 +1,111 @@
+// manifest.json: the traceability record of a scenario set. Every scenario
+// names where it stands (road, s, chainage, OSM ids), what it was made of
+// (template, parameter values, assets, perturbations) and which ODD elements
+// it exercises, each with its source.
+#include "railodd/scenario/outputs.hpp"
+
+#include <cmath>
+
+namespace railodd::scenario {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson lane_json(const LanePlacement& p) {
+    ojson j = {{"road_id", p.road_id}, {"lane_id", p.lane_id}, {"s", p.s}};
+    if (p.offset != 0.0) {
+        j["offset"] = p.offset;
+    }
+    if (p.reversed) {
+        j["reversed"] = true;
+    }
+    return j;
+}
+
+ojson anchor_json(const ScenarioRecord& rec, const odd::OddProfile& profile) {
+    const Anchor& a = rec.anchor;
+    const auto& e = profile.elements[a.element];
+    ojson context = ojson::array();
+    for (const auto i : a.context) {
+        const auto& c = profile.elements[i];
+        context.push_back({{"element", c.element}, {"road_id", c.road_id}, {"s_start", c.s_start}, {"s_end", c.s_end},
+                           {"chainage_start", c.chainage_start}, {"chainage_end", c.chainage_end},
+                           {"osm_ids", c.osm_ids}});
+    }
+    ojson j = {{"element", e.element}, {"road_id", a.place.road_id}, {"lane_id", a.place.lane_id}, {"s", a.place.s},
+               {"track", e.track}, {"chainage", a.chainage}, {"osm_ids", e.osm_ids}};
+    j["speed_limit_kmh"] = std::isfinite(a.speed_limit_kmh) ? ojson(a.speed_limit_kmh) : ojson(nullptr);
+    j["context"] = std::move(context);
+    return j;
+}
+
+ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile, const OutputInfo& info) {
+    const ConcreteScenario& sc = rec.scenario;
+    ojson params = ojson::object();
+    for (std::size_t i = 0; i < rec.values.size(); ++i) {
+        params[rec.values[i].first] = {{"value", rec.raw[i].second}, {"text", rec.values[i].second}};
+    }
+    ojson assets = ojson::object();
+    for (const auto& [actor, id] : rec.assets) {
+        assets[actor] = id;
+    }
+    ojson perturbations = ojson::array();
+    ojson covered = ojson::array();
+    for (const auto& v : rec.odd_elements) {
+        if (v.source == "perturbation" && !v.attribute.empty()) {
+            perturbations.push_back({{"element", v.element}, {"attribute", v.attribute}, {"value", v.value},
+                                     {"class", v.value_class}});
+        }
+        covered.push_back({{"element", v.element}, {"attribute", v.attribute}, {"value", v.value},
+                           {"class", v.value_class}, {"source", v.source}});
+    }
+    ojson osc_params = ojson::object();
+    for (const auto& p : sc.parameters) {
+        osc_params[p.name] = p.value;
+    }
+    const Anchor& a = rec.anchor;
+    return {{"id", sc.id},
+            {"file", sc.id + ".xosc"},
+            {"behavior", sc.id + ".behavior.yaml"},
+            {"template", rec.template_id},
+            {"text", sc.description},
+            {"parameters", std::move(params)},
+            {"osc_parameters", std::move(osc_params)},
+            {"anchor", anchor_json(rec, profile)},
+            {"ego", {{"asset", sc.ego.asset_id}, {"start", lane_json(sc.ego.start)},
+                     {"run_up_m", a.chainage - a.start_chainage}, {"overrun_m", a.end_chainage - a.chainage},
+                     {"speed_kmh", sc.ego.speed_mps * 3.6}, {"speed_basis", rec.speed_basis},
+                     {"trigger_distance_m", sc.trigger_distance_m}}},
+            {"assets", std::move(assets)},
+            {"perturbations", std::move(perturbations)},
+            {"odd_elements", std::move(covered)},
+            {"map", info.map_file}};
+}
+
+} // namespace
+
+ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const OutputInfo& info) {
+    ojson j;
+    j["railodd"] = {{"format", "scenario_manifest"}, {"format_version", 1}};
+    j["inputs"] = {{"map_dir", info.map_dir},     {"map", info.map_file},
+                   {"taxonomy", info.taxonomy_file}, {"catalog", info.catalog_file},
+                   {"templates", info.templates_file}, {"odd_spec", info.spec_file},
+                   {"route", profile.route}};
+    j["generation"] = {{"strategy", to_string(info.strategy)}, {"count", info.count}, {"seed", info.seed},
+                       {"openscenario", "1." + std::to_string(info.osc_minor)}};
+    ojson templates = ojson::array();
+    for (const auto& r : g.runs) {
+        templates.push_back({{"id", r.template_id}, {"anchors", r.anchors}, {"anchors_skipped", r.skipped.size()},
+                             {"scenarios", r.rows}, {"distribution", "distributions/" + r.template_id + ".xosc"}});
+    }
+    j["templates"] = std::move(templates);
+    ojson scenarios = ojson::array();
+    for (const auto& s : g.scenarios) {
+        scenarios.push_back(scenario_json(s, profile, info));
+    }
+    j["scenarios"] = std::move(scenarios);
+    return j;
+}
+
+} // namespace railodd::scenario

@@ -1,0 +1,242 @@
+// Pairwise coverage is built greedily, one row at a time, around the first
+// uncovered pair (AETG, Cohen et al. 1997, without the random candidates so
+// that it is deterministic): each further dimension takes the valid value that
+// covers most uncovered pairs with the values already chosen. A pair no valid
+// row can hold is found when the greedy completion fails for every value
+// ordering we try, and is counted as infeasible rather than left as a gap.
+#include "railodd/scenario/strategies.hpp"
+
+#include <random>
+#include <set>
+#include <stdexcept>
+
+namespace railodd::scenario {
+
+namespace {
+
+// Uncovered pairs of dimensions i < j as |Di| x |Dj| flags.
+class PairTable {
+public:
+    PairTable(const std::vector<std::size_t>& sizes) : sizes_(sizes), n_(sizes.size()) {
+        flags_.resize(n_ * n_);
+        for (std::size_t i = 0; i < n_; ++i) {
+            for (std::size_t j = i + 1; j < n_; ++j) {
+                flags_[i * n_ + j].assign(sizes[i] * sizes[j], 1);
+                left_ += sizes[i] * sizes[j];
+            }
+        }
+    }
+    bool open(std::size_t i, std::size_t vi, std::size_t j, std::size_t vj) const {
+        return i < j ? flags_[i * n_ + j][vi * sizes_[j] + vj] : flags_[j * n_ + i][vj * sizes_[i] + vi];
+    }
+    void close(std::size_t i, std::size_t vi, std::size_t j, std::size_t vj) {
+        auto& f = i < j ? flags_[i * n_ + j][vi * sizes_[j] + vj] : flags_[j * n_ + i][vj * sizes_[i] + vi];
+        left_ -= f;
+        f = 0;
+    }
+    void close_row(const Row& r) {
+        for (std::size_t i = 0; i < n_; ++i) {
+            for (std::size_t j = i + 1; j < n_; ++j) {
+                close(i, r[i], j, r[j]);
+            }
+        }
+    }
+    std::size_t left() const { return left_; }
+    // The first open pair in (i, j, vi, vj) order.
+    bool first_open(std::size_t& i, std::size_t& vi, std::size_t& j, std::size_t& vj) const {
+        for (i = 0; i < n_; ++i) {
+            for (j = i + 1; j < n_; ++j) {
+                const auto& f = flags_[i * n_ + j];
+                for (std::size_t k = 0; k < f.size(); ++k) {
+                    if (f[k]) {
+                        vi = k / sizes_[j];
+                        vj = k % sizes_[j];
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+private:
+    std::vector<std::size_t> sizes_;
+    std::size_t n_;
+    std::vector<std::vector<char>> flags_;
+    std::size_t left_ = 0;
+};
+
+// Completes `row` dimension by dimension, each time with the valid value that
+// closes most open pairs (lowest index on ties). False when some dimension has
+// no valid value left.
+bool complete(Row& row, const std::vector<std::size_t>& sizes, const Validity& valid, const PairTable& open) {
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+        if (row[k] != kUnset) {
+            continue;
+        }
+        std::size_t best = kUnset, best_gain = 0;
+        for (std::size_t v = 0; v < sizes[k]; ++v) {
+            row[k] = v;
+            if (!valid(row)) {
+                continue;
+            }
+            std::size_t gain = 0;
+            for (std::size_t m = 0; m < sizes.size(); ++m) {
+                gain += m != k && row[m] != kUnset && open.open(k, v, m, row[m]) ? 1 : 0;
+            }
+            if (best == kUnset || gain > best_gain) {
+                best = v;
+                best_gain = gain;
+            }
+        }
+        row[k] = best;
+        if (best == kUnset) {
+            return false;
+        }
+    }
+    return valid(row);
+}
+
+bool empty_domain(const std::vector<std::size_t>& sizes) {
+    for (const auto s : sizes) {
+        if (s == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+const char* to_string(Strategy s) {
+    switch (s) {
+    case Strategy::full: return "full";
+    case Strategy::pairwise: return "pairwise";
+    case Strategy::random: return "random";
+    }
+    return "?";
+}
+
+Strategy strategy_from(const std::string& name) {
+    if (name == "full") return Strategy::full;
+    if (name == "pairwise") return Strategy::pairwise;
+    if (name == "random") return Strategy::random;
+    throw std::invalid_argument("unknown strategy '" + name + "' (full, pairwise or random)");
+}
+
+std::vector<Row> full_factorial(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t limit) {
+    std::vector<Row> rows;
+    if (empty_domain(sizes)) {
+        return rows;
+    }
+    double product = 1.0;
+    for (const auto s : sizes) {
+        product *= static_cast<double>(s);
+    }
+    if (product > static_cast<double>(limit)) {
+        throw std::length_error("the full factorial has " + std::to_string(static_cast<long long>(product)) +
+                                " rows, more than " + std::to_string(limit));
+    }
+    Row r(sizes.size(), 0);
+    while (true) {
+        if (valid(r)) {
+            rows.push_back(r);
+        }
+        std::size_t k = sizes.size();
+        while (k > 0 && ++r[k - 1] == sizes[k - 1]) {
+            r[--k] = 0;
+        }
+        if (k == 0) {
+            return rows;
+        }
+    }
+}
+
+std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity& valid) {
+    std::vector<Row> rows;
+    if (empty_domain(sizes)) {
+        return rows;
+    }
+    if (sizes.size() < 2) {
+        return full_factorial(sizes, valid);
+    }
+    PairTable open(sizes);
+    std::size_t i = 0, vi = 0, j = 0, vj = 0;
+    while (open.first_open(i, vi, j, vj)) {
+        Row r(sizes.size(), kUnset);
+        r[i] = vi;
+        r[j] = vj;
+        if (valid(r) && complete(r, sizes, valid, open)) {
+            open.close_row(r);
+            rows.push_back(std::move(r));
+        } else {
+            open.close(i, vi, j, vj); // no valid row holds it: infeasible, not a gap
+        }
+    }
+    return rows;
+}
+
+std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t count,
+                             std::uint64_t seed) {
+    std::vector<Row> rows;
+    if (empty_domain(sizes) || count == 0) {
+        return rows;
+    }
+    std::mt19937_64 rng(seed);
+    // Index draws by rejection, not std::uniform_int_distribution, whose
+    // algorithm differs between standard libraries.
+    auto draw = [&rng](std::size_t n) {
+        const std::uint64_t bound = UINT64_MAX - UINT64_MAX % n;
+        std::uint64_t x = 0;
+        do {
+            x = rng();
+        } while (x >= bound);
+        return static_cast<std::size_t>(x % n);
+    };
+    std::set<Row> seen;
+    const std::size_t attempts = 1000 * count;
+    for (std::size_t a = 0; a < attempts && rows.size() < count; ++a) {
+        Row r(sizes.size());
+        for (std::size_t k = 0; k < sizes.size(); ++k) {
+            r[k] = draw(sizes[k]);
+        }
+        if (valid(r) && seen.insert(r).second) {
+            rows.push_back(std::move(r));
+        }
+    }
+    return rows;
+}
+
+PairStats pair_coverage(const std::vector<std::size_t>& sizes, const Validity& valid, const std::vector<Row>& rows) {
+    PairStats stats;
+    if (empty_domain(sizes) || sizes.size() < 2) {
+        return stats;
+    }
+    PairTable held(sizes);
+    for (const auto& r : rows) {
+        held.close_row(r);
+    }
+    // Feasibility of each pair: the pairwise builder's test, a valid completion.
+    PairTable probe(sizes);
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        for (std::size_t j = i + 1; j < sizes.size(); ++j) {
+            for (std::size_t vi = 0; vi < sizes[i]; ++vi) {
+                for (std::size_t vj = 0; vj < sizes[j]; ++vj) {
+                    Row r(sizes.size(), kUnset);
+                    r[i] = vi;
+                    r[j] = vj;
+                    const bool covered = !held.open(i, vi, j, vj);
+                    if (covered || (valid(r) && complete(r, sizes, valid, probe))) {
+                        ++stats.feasible;
+                        stats.covered += covered ? 1 : 0;
+                    } else {
+                        ++stats.infeasible;
+                    }
+                }
+            }
+        }
+    }
+    return stats;
+}
+
+} // namespace railodd::scenario

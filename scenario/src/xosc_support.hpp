@@ -1,0 +1,82 @@
+#pragma once
+// Helpers shared by the OpenSCENARIO writer's files: number formatting,
+// attributes, parameter references, revision differences, and the atomic file
+// write.
+#include "railodd/scenario/concrete.hpp"
+#include "railodd/scenario/xosc_writer.hpp"
+
+#include <pugixml.hpp>
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace railodd::scenario::xosc {
+
+// Fixed notation, at most 6 decimals (micrometres, microradians), trailing
+// zeros dropped, never "-0": stable across runs and locales. Non-finite
+// values throw std::domain_error: they are a bug upstream, not a scenario.
+std::string num(double v);
+
+inline void attr(pugi::xml_node n, const char* name, const std::string& value) {
+    n.append_attribute(name).set_value(value.c_str());
+}
+inline void attr(pugi::xml_node n, const char* name, const char* value) {
+    n.append_attribute(name).set_value(value);
+}
+inline void attr(pugi::xml_node n, const char* name, double value) { attr(n, name, num(value)); }
+inline void attr(pugi::xml_node n, const char* name, int value) { attr(n, name, std::to_string(value)); }
+
+// Throws UsageError unless the revision is 1.1, 1.2 or 1.3.
+void check_revision(const WriteOptions& opt);
+
+// A new document: XML declaration, <OpenSCENARIO> and its <FileHeader>; returns
+// the root element.
+pugi::xml_node begin_document(pugi::xml_document& doc, const WriteOptions& opt, const std::string& date,
+                              const std::string& description, const std::string& author);
+
+// The document as text (two-space indent, UTF-8).
+std::string to_text(const pugi::xml_document& doc);
+
+// Writes `text` to a temporary file beside `file` and renames it into place.
+void write_atomically(const std::filesystem::path& file, std::string_view text);
+
+// The scenario's parameters and the revision: what the writers of the
+// scenario document need besides the scenario itself.
+class Context {
+public:
+    Context(const ConcreteScenario& sc, const WriteOptions& opt) : sc_(sc), opt_(opt) {}
+    const ConcreteScenario& scenario() const { return sc_; }
+    int rev_minor() const { return opt_.rev_minor; }
+
+    bool declared(std::string_view name) const;
+    // "$name" when the parameter is declared, the literal otherwise.
+    std::string value(std::string_view name, const std::string& literal) const;
+    std::string value(std::string_view name, double literal) const { return value(name, num(literal)); }
+
+private:
+    const ConcreteScenario& sc_;
+    WriteOptions opt_;
+};
+
+// <LanePosition> (with its Orientation) as the child of `parent`.
+void lane_position(pugi::xml_node parent, const LanePlacement& p);
+// <Position><LanePosition/></Position> as the child of `parent`.
+void position(pugi::xml_node parent, const LanePlacement& p);
+
+// <PrivateAction><LongitudinalAction><SpeedAction> to `speed` (a number or
+// "$Param") with step dynamics.
+void speed_action(pugi::xml_node private_action_parent, const std::string& speed);
+
+// Document sections written by the other files.
+void write_init(pugi::xml_node storyboard, const Context& cx);
+void write_story(pugi::xml_node storyboard, const Context& cx);
+void write_stop_trigger(pugi::xml_node storyboard, const Context& cx);
+void write_environment(pugi::xml_node parent, const Context& cx);
+void write_catalog_entry(pugi::xml_node catalog, const Actor& a);
+
+// The parameter naming an actor's catalog entry: "EgoAsset" for the ego,
+// NAME + "Asset" for the others.
+std::string asset_parameter(const Actor& a, bool is_ego);
+
+} // namespace railodd::scenario::xosc
