@@ -45,13 +45,21 @@ std::map<Key, std::size_t> route_items(const odd::OddProfile& profile, const odd
     return items;
 }
 
-// Per item, the scenarios exercising it (each scenario counted once).
-std::map<Key, std::size_t> scenario_items(const Generation& g) {
+// Per item, the scenarios exercising it (each scenario counted once); with
+// `beyond_map`, only what assets, perturbations and parameters contribute.
+std::map<Key, std::size_t> scenario_items(const Generation& g, const odd::Taxonomy& tax, bool beyond_map = false) {
     std::map<Key, std::size_t> items;
     for (const auto& s : g.scenarios) {
         std::set<Key> seen;
         for (const auto& v : s.odd_elements) {
-            seen.insert({v.element, v.attribute, v.value_class});
+            const odd::Element* el = tax.find(v.element);
+            const odd::Attribute* a = el && !v.attribute.empty() ? tax.attribute(*el, v.attribute) : nullptr;
+            if (!v.attribute.empty() && (!a || !countable(*a))) {
+                continue;
+            }
+            if (!beyond_map || v.source != "map") {
+                seen.insert({v.element, v.attribute, v.value_class});
+            }
         }
         for (const auto& k : seen) {
             ++items[k];
@@ -131,13 +139,22 @@ Coverage compute_coverage(const odd::OddProfile& profile, const odd::Taxonomy& t
     c.scenarios = generation.scenarios.size();
     c.runs = generation.runs;
     const auto route = route_items(profile, taxonomy);
-    const auto covered = scenario_items(generation);
+    const auto covered = scenario_items(generation, taxonomy);
     // Taxonomy order, so the table reads like the taxonomy file.
     for (const auto& el : taxonomy.elements) {
         for (auto it = route.lower_bound({el.path, "", ""}); it != route.end() && std::get<0>(it->first) == el.path; ++it) {
             const auto s = covered.find(it->first);
             c.route.push_back({el.path, std::get<1>(it->first), std::get<2>(it->first), it->second,
                                s == covered.end() ? 0 : s->second});
+        }
+    }
+    const auto beyond = scenario_items(generation, taxonomy, true);
+    for (const auto& el : taxonomy.elements) {
+        for (auto it = beyond.lower_bound({el.path, "", ""}); it != beyond.end() && std::get<0>(it->first) == el.path;
+             ++it) {
+            const auto r = route.find(it->first);
+            c.exercised.push_back({el.path, std::get<1>(it->first), std::get<2>(it->first),
+                                   r == route.end() ? 0 : r->second, it->second});
         }
     }
     if (spec) {

@@ -40,6 +40,7 @@ ojson coverage_json(const Coverage& c) {
     j["scenarios"] = c.scenarios;
     j["route"] = {{"items", c.route.size()}, {"covered", covered(c.route)},
                   {"ratio", ratio(covered(c.route), c.route.size())}, {"elements", items_json(c.route)}};
+    j["exercised"] = items_json(c.exercised);
     if (!c.spec_name.empty() || !c.spec.empty()) {
         j["spec"] = {{"name", c.spec_name}, {"items", c.spec.size()}, {"covered", covered(c.spec)},
                      {"ratio", ratio(covered(c.spec), c.spec.size())}, {"elements", items_json(c.spec)}};
@@ -96,6 +97,7 @@ std::string coverage_table(const Coverage& c) {
         }
     };
     section("ODD elements and classes on the route (on route / scenarios)", c.route);
+    section("Dynamic elements and conditions the scenarios add (- / scenarios)", c.exercised);
     if (!c.spec.empty()) {
         section(("ODD spec '" + c.spec_name + "' (on route / scenarios)").c_str(), c.spec);
     }

@@ -28,6 +28,9 @@ struct CoverageItem {
 struct Coverage {
     std::vector<CoverageItem> route; // everything the route's profile has, taxonomy order
     std::vector<CoverageItem> spec;  // everything an ODD spec allows, when one was given
+    // What the scenarios add beyond the map (assets, perturbations, the ego's
+    // speed): Dynamic Elements and Environmental Conditions, taxonomy order.
+    std::vector<CoverageItem> exercised;
     std::string spec_name;
     std::vector<TemplateRun> runs;   // pairwise coverage per template
     std::size_t scenarios = 0;
