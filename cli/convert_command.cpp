@@ -38,7 +38,8 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("-o,--output", opt_.outdir, "Output directory")->required();
     app->add_option("--bbox", opt_.bbox, "Select by bounding box W,S,E,N (degrees)");
     app->add_option("--polygon", opt_.polygon, "Select by a GeoJSON (Multi)Polygon file");
-    app->add_option("--relation", opt_.relation, "Select the ways of an OSM rail route relation (id)");
+    app->add_option("--relation", opt_.relation,
+                    "Select the ways of an OSM rail route relation (id); odd_profile.* follow its member order");
     app->add_option("--field-mapping", opt_.field_mapping, "YAML mapping of vector fields onto OSM tags");
     app->add_option("--dem", opt_.dem, "Elevation raster(s) for the vertical profile (repeat for several tiles)");
     app->add_option("--node-noise", opt_.node_noise_m,
@@ -201,14 +202,17 @@ Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::stri
     return g;
 }
 
-// With --from/--to, the profile along the route between the two stations
-// (the map stays the whole selection); the route for report.json.
+// With --from/--to, the profile along the route between the two stations;
+// else with --relation, along the relation's member ways (the map stays the
+// whole selection); the route for report.json.
 std::optional<odd::Route> route_profile(const ConvertOptions& o, const ingest::IngestResult& r, const Geometry& g,
                                         const odd::Taxonomy& taxonomy, odd::OddProfile& profile) {
-    if (o.from.empty()) {
+    if (o.from.empty() && !r.relation) {
         return std::nullopt;
     }
-    odd::Route route = odd::find_route(g.tracks, g.fitted_tracks, g.attachment, r.features, o.from, o.to);
+    odd::Route route = o.from.empty()
+                           ? odd::relation_route(g.tracks, g.fitted_tracks, r.tracks, *r.relation, r.source)
+                           : odd::find_route(g.tracks, g.fitted_tracks, g.attachment, r.features, o.from, o.to);
     profile = odd::along_route(profile, route, taxonomy);
     return route;
 }

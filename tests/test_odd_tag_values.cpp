@@ -191,6 +191,25 @@ TEST(OddTagValues, UsageServiceAndDirection) {
     EXPECT_FALSE(parse_preferred_direction("up").ok());
 }
 
+TEST(OddTagValues, TrainRadio) {
+    EXPECT_EQ(parse_train_radio("gsm-r").value, (std::vector{TrainRadio::gsm_r}));
+    EXPECT_EQ(parse_train_radio("analogue").value, (std::vector{TrainRadio::analogue}));
+    EXPECT_EQ(parse_train_radio("no").value, (std::vector{TrainRadio::none}));
+    EXPECT_EQ(parse_train_radio("gsm-r;analogue").value, (std::vector{TrainRadio::gsm_r, TrainRadio::analogue}));
+    const auto us = parse_train_radio("analog");
+    EXPECT_EQ(us.value, (std::vector{TrainRadio::analogue}));
+    EXPECT_NE(us.note.find("analog"), std::string::npos);
+    const auto cased = parse_train_radio("GSM-R");
+    EXPECT_EQ(cased.value, (std::vector{TrainRadio::gsm_r}));
+    EXPECT_FALSE(cased.note.empty());
+    EXPECT_EQ(std::string(to_string(TrainRadio::gsm_r)), "gsm-r");
+    for (const auto* bad : {"", "yes", "tetra", "gsm-r;", "no;gsm-r"}) {
+        const auto r = parse_train_radio(bad);
+        EXPECT_FALSE(r.ok()) << bad;
+        EXPECT_FALSE(r.problem.empty()) << bad;
+    }
+}
+
 TEST(OddTagValues, CrossingBarrier) {
     EXPECT_EQ(parse_crossing_barrier("full").value, Barrier::full);
     EXPECT_EQ(parse_crossing_barrier("double_half").value, Barrier::double_half);

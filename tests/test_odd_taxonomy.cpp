@@ -194,6 +194,13 @@ TEST(OddTaxonomy, TagParserNamesAreTaxonomyValues) {
     for (auto f : {SignalForm::light, SignalForm::semaphore, SignalForm::sign}) {
         EXPECT_TRUE(has("Scenery/Trackside equipment/Signal", "form", to_string(f)));
     }
+    for (auto r : {TrainRadio::gsm_r, TrainRadio::frmcs, TrainRadio::analogue, TrainRadio::none}) {
+        EXPECT_TRUE(has("Connectivity/Communication/Train radio", "system", to_string(r))) << to_string(r);
+    }
+    // The OSM reader's land-use kinds (docs/odd.md "Land use").
+    for (const char* kind : {"urban", "suburban", "rural", "industrial", "forest", "agricultural", "water"}) {
+        EXPECT_TRUE(has("Scenery/Surroundings/Land use", "kind", kind)) << kind;
+    }
     for (int c = 0; c <= static_cast<int>(SignalCategory::other); ++c) {
         const auto* name = to_string(static_cast<SignalCategory>(c));
         EXPECT_TRUE(has("Scenery/Trackside equipment/Signal", "category", name)) << name;

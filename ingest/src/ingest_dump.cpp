@@ -2,6 +2,7 @@
 
 #include "railodd/util/json_text.hpp"
 
+#include <cmath>
 #include <map>
 
 namespace railodd::ingest {
@@ -102,6 +103,47 @@ void append_feature(std::string& out, const Feature& f) {
     out += "}}";
 }
 
+ordered_json land_use_by_kind(const std::vector<LandUseArea>& areas) {
+    std::map<std::string, std::size_t> n;
+    for (const auto& a : areas) {
+        ++n[a.kind];
+    }
+    ordered_json j = ordered_json::object();
+    for (const auto& [k, v] : n) {
+        j[k] = v;
+    }
+    return j;
+}
+
+// The simplified outline as read, back in WGS84: a Polygon of all rings
+// (the even-odd rule decides inside, as in the tagger).
+void append_land_use(std::string& out, const LandUseArea& a, const LocalProjection& proj) {
+    out += "{\"type\":\"Feature\",\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[";
+    for (std::size_t r = 0; r < a.rings.size(); ++r) {
+        out += r ? ",[" : "[";
+        for (std::size_t i = 0; i <= a.rings[r].size(); ++i) {
+            const LonLat ll = proj.inverse(a.rings[r][i % a.rings[r].size()]);
+            out += i ? ",[" : "[";
+            append_json_number(out, ll.lon);
+            out += ',';
+            append_json_number(out, ll.lat);
+            out += ']';
+        }
+        out += ']';
+    }
+    out += "]},\"properties\":{\"layer\":\"land_use\",\"osm_type\":";
+    append_json_string(out, a.osm_type);
+    out += ",\"osm_id\":";
+    append_json_number(out, a.id);
+    out += ",\"kind\":";
+    append_json_string(out, a.kind);
+    out += ",\"tag\":";
+    append_json_string(out, a.tag);
+    out += ",\"area_m2\":";
+    append_json_number(out, std::round(a.area_m2));
+    out += "}}";
+}
+
 } // namespace
 
 ordered_json report_sections(const IngestResult& r) {
@@ -118,12 +160,15 @@ ordered_json report_sections(const IngestResult& r) {
                   {"features", c.input_features},
                   {"nodes", c.input_nodes},
                   {"track_nodes", c.input_track_nodes},
-                  {"missing_track_nodes", c.missing_track_nodes}};
+                  {"missing_track_nodes", c.missing_track_nodes},
+                  {"land_use_areas", c.input_land_use}};
     j["output"] = {{"track_ways", c.output_track_ways},
                    {"clipped_track_ways", clipped},
                    {"road_ways", c.output_road_ways},
                    {"features", c.output_features},
-                   {"features_by_kind", counts_by_kind(r.features)}};
+                   {"features_by_kind", counts_by_kind(r.features)},
+                   {"land_use_areas", c.output_land_use},
+                   {"land_use_by_kind", land_use_by_kind(r.land_use)}};
     j["projection"] = {{"proj", r.projection.proj_string()},
                        {"origin", {{"lon", r.projection.origin().lon}, {"lat", r.projection.origin().lat}}}};
     ordered_json dropped = ordered_json::array();
@@ -158,6 +203,10 @@ std::string to_geojson(const IngestResult& r) {
     for (const auto& f : r.features) {
         next();
         append_feature(out, f);
+    }
+    for (const auto& a : r.land_use) {
+        next();
+        append_land_use(out, a, r.projection);
     }
     out += "\n]}\n";
     return out;

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
-#include <map>
+#include <optional>
 
 namespace railodd::ingest {
 
@@ -41,73 +41,30 @@ double ele_of(const osmium::TagList& tags) {
     return end != v ? e : std::numeric_limits<double>::quiet_NaN();
 }
 
-struct RelationMembers {
-    bool rail_route = false;
-    std::vector<std::int64_t> ways;
-    std::vector<std::int64_t> relations;
-};
-
-bool is_rail_route_master(const osmium::TagList& tags) {
-    const char* type = tags.get_value_by_key("type");
-    const char* rm = tags.get_value_by_key("route_master");
-    return type && rm && std::strcmp(type, "route_master") == 0 &&
-           (std::strcmp(rm, "train") == 0 || std::strcmp(rm, "tram") == 0 || std::strcmp(rm, "subway") == 0 ||
-            std::strcmp(rm, "light_rail") == 0 || std::strcmp(rm, "railway") == 0);
+// A closed way with a land-use kind, or a member of a land-use multipolygon.
+std::optional<RawLandUseWay> land_use_way(const osmium::Way& way, const std::vector<std::int64_t>& members) {
+    const auto& nodes = way.nodes();
+    const bool closed = nodes.size() >= 4 && nodes.front().ref() == nodes.back().ref();
+    auto lu = closed ? land_use_kind(way.tags()) : std::nullopt;
+    if (!lu && !std::binary_search(members.begin(), members.end(), way.id())) {
+        return std::nullopt;
+    }
+    RawLandUseWay r{{way.id(), {}, refs_of(way)}, {}, {}};
+    if (lu) {
+        r.kind = std::move(lu->kind);
+        r.tag = std::move(lu->tag);
+    }
+    return r;
 }
 
 } // namespace
 
-std::vector<std::int64_t> relation_way_members(const std::filesystem::path& file, std::int64_t relation) {
-    std::map<std::int64_t, RelationMembers> relations;
-    scan_osm(file, bits::relation, "reading relations", [&](const osmium::OSMObject& obj) {
-        const auto& rel = static_cast<const osmium::Relation&>(obj);
-        RelationMembers m;
-        m.rail_route = is_rail_route(rel.tags()) || is_rail_route_master(rel.tags());
-        for (const auto& member : rel.members()) {
-            if (member.type() == osmium::item_type::way) {
-                m.ways.push_back(member.ref());
-            } else if (member.type() == osmium::item_type::relation) {
-                m.relations.push_back(member.ref());
-            }
-        }
-        relations.emplace(rel.id(), std::move(m));
-    });
-    const auto root = relations.find(relation);
-    if (root == relations.end()) {
-        throw InputError(file.string(), "relation " + std::to_string(relation) + " is not in the file");
-    }
-    if (!root->second.rail_route) {
-        throw InputError(file.string(), "relation " + std::to_string(relation) +
-                                            " is not a rail route (type=route with route=train|railway|tracks|"
-                                            "tram|subway|light_rail, or a route_master of those)");
-    }
-    std::vector<std::int64_t> ways;
-    std::vector<std::int64_t> todo{relation};
-    std::vector<std::int64_t> seen;
-    while (!todo.empty()) {
-        const std::int64_t id = todo.back();
-        todo.pop_back();
-        if (std::find(seen.begin(), seen.end(), id) != seen.end()) {
-            continue; // relation cycles exist in the wild
-        }
-        seen.push_back(id);
-        const auto it = relations.find(id);
-        if (it == relations.end()) {
-            continue; // nested relation outside the extract
-        }
-        ways.insert(ways.end(), it->second.ways.begin(), it->second.ways.end());
-        todo.insert(todo.end(), it->second.relations.begin(), it->second.relations.end());
-    }
-    std::sort(ways.begin(), ways.end());
-    ways.erase(std::unique(ways.begin(), ways.end()), ways.end());
-    return ways;
-}
-
 WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members,
-                        std::size_t road_refs_cap) {
+                        std::size_t road_refs_cap, const LandUseWanted& land_use) {
     WayScan scan;
     scan.roads_complete = road_refs_cap > 0;
-    std::size_t road_refs = 0;
+    scan.land_use_complete = land_use.refs_cap > 0;
+    std::size_t road_refs = 0, land_use_refs = 0;
     scan_osm(file, bits::way, "reading ways", [&](const osmium::OSMObject& obj) {
         const auto& way = static_cast<const osmium::Way&>(obj);
         if (is_track(way.tags())) {
@@ -132,8 +89,35 @@ WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std
                 scan.roads.push_back({way.id(), to_tags(way.tags()), refs_of(way)});
             }
         }
+        if (scan.land_use_complete) {
+            if (auto lu = land_use_way(way, land_use.members)) {
+                land_use_refs += lu->way.refs.size();
+                if (land_use_refs > land_use.refs_cap) {
+                    scan.land_use_complete = false; // read around the tracks once they are known
+                    std::vector<RawLandUseWay>().swap(scan.land_use);
+                } else {
+                    scan.land_use.push_back(std::move(*lu));
+                }
+            }
+        }
     });
     return scan;
+}
+
+std::vector<RawLandUseWay> scan_land_use_ways(const std::filesystem::path& file,
+                                              const std::vector<std::int64_t>& members, const NodeLocations& near) {
+    std::vector<RawLandUseWay> out;
+    scan_osm(file, bits::way, "reading land use", [&](const osmium::OSMObject& obj) {
+        const auto& way = static_cast<const osmium::Way&>(obj);
+        const bool touches = std::any_of(way.nodes().begin(), way.nodes().end(),
+                                         [&](const osmium::NodeRef& nr) { return near.located(nr.ref()); });
+        if (touches) {
+            if (auto lu = land_use_way(way, members)) {
+                out.push_back(std::move(*lu));
+            }
+        }
+    });
+    return out;
 }
 
 NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted) {

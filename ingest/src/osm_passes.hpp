@@ -27,22 +27,40 @@ struct RawFeature {
     std::vector<std::int64_t> refs;  // ways
 };
 
-// Way ids of a rail route relation and of the relations it contains (route
-// masters, super-routes), sorted. Throws InputError if it is absent or no rail route.
-std::vector<std::int64_t> relation_way_members(const std::filesystem::path& file, std::int64_t relation);
+// A closed way tagged with a land-use kind, or a member way of a land-use
+// multipolygon (kind empty); tags are not kept, only the kind.
+struct RawLandUseWay {
+    RawWay way;
+    std::string kind;
+    std::string tag;
+};
+
+// Which land-use ways a ways pass keeps: closed tagged ways and the members of
+// land-use multipolygons (sorted), up to `refs_cap` node references in all.
+struct LandUseWanted {
+    const std::vector<std::int64_t>& members;
+    std::size_t refs_cap = 0;
+};
 
 struct WayScan {
     std::vector<RawWay> tracks;
     std::vector<RawFeature> area_features; // platforms and station areas
     std::vector<RawWay> roads;             // every road way of the file, if roads_complete
     bool roads_complete = false;
+    std::vector<RawLandUseWay> land_use;   // every land-use way of the file, if land_use_complete
+    bool land_use_complete = false;
 };
 
 // Track ways (only `members` if non-null) and platform / station ways. Road
 // ways are kept too while all of them together reference at most
-// `road_refs_cap` nodes, which saves three passes on all but very large files.
+// `road_refs_cap` nodes, which saves three passes on all but very large files;
+// land-use ways likewise within `land_use.refs_cap`.
 WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members,
-                        std::size_t road_refs_cap);
+                        std::size_t road_refs_cap, const LandUseWanted& land_use);
+
+// Land-use ways with at least one node located in `near`.
+std::vector<RawLandUseWay> scan_land_use_ways(const std::filesystem::path& file,
+                                              const std::vector<std::int64_t>& members, const NodeLocations& near);
 
 struct NodeScan {
     std::size_t node_count = 0;

@@ -1,8 +1,10 @@
 #include "railodd/ingest/osm_reader.hpp"
 
 #include "feature_selection.hpp"
+#include "land_use.hpp"
 #include "local_frame.hpp"
 #include "osm_passes.hpp"
+#include "osm_relations.hpp"
 #include "road_selection.hpp"
 #include "segment_grid.hpp"
 #include "way_parts.hpp"
@@ -94,17 +96,20 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     result.source = file.string();
     result.selection = sel.describe();
 
-    // Phase 1: a route relation restricts the tracks to its member ways.
-    std::vector<std::int64_t> members;
-    if (sel.relation) {
+    // Phase 1: a route relation restricts the tracks to its member ways;
+    // land-use multipolygons name the member ways to read.
+    RelationScan relations;
+    if (sel.relation || options.land_use) {
         timer.start("read_relations");
-        members = relation_way_members(file, *sel.relation);
+        relations = scan_relations(file, sel.relation);
+        result.relation = relations.route;
     }
 
-    // Phase 2: track, platform and station ways; only their node ids are known yet.
+    // Phase 2: track, platform, station and land-use ways; only their node ids are known yet.
     timer.start("read_ways");
     const std::size_t road_refs_cap = options.road_corridor_m > 0 ? options.road_prefetch_refs : 0;
-    WayScan ways = scan_track_ways(file, sel.relation ? &members : nullptr, road_refs_cap);
+    const LandUseWanted land_use{relations.land_use_members, options.land_use ? options.land_use_prefetch_refs : 0};
+    WayScan ways = scan_track_ways(file, sel.relation ? &relations.route_ways : nullptr, road_refs_cap, land_use);
     NodeLocations locs;
     for (const auto& w : ways.tracks) {
         locs.want_all(w.refs);
@@ -114,6 +119,9 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     }
     for (const auto& r : ways.roads) {
         locs.want_all(r.refs);
+    }
+    for (const auto& l : ways.land_use) {
+        locs.want_all(l.way.refs);
     }
     locs.seal();
 
@@ -125,6 +133,11 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     // Phase 4: the selection, the local frame and the track geometry in it.
     timer.start("select_and_project");
     select_tracks(ways.tracks, locs, sel, result);
+    if (result.tracks.empty() && sel.relation) {
+        throw InputError(file.string(), "relation " + std::to_string(*sel.relation) + " has no railway track member " +
+                                            "with located nodes in the selection (" + result.selection + "; " +
+                                            std::to_string(relations.route_ways.size()) + " member way(s))");
+    }
     if (result.tracks.empty()) {
         throw InputError(file.string(), "no railway track way with located nodes in the selection (" +
                                             result.selection + "); " + std::to_string(result.dropped.size()) +
@@ -141,7 +154,19 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     FeatureContext ctx{sel, options, grid, result.projection, sorted_track_node_ids(result.tracks)};
     select_features(std::move(nodes.point_features), std::move(ways.area_features), locs, ctx, result);
 
-    // Phase 6: roads in the corridor around the tracks.
+    // Phase 6: land-use areas that may hold a track.
+    if (options.land_use) {
+        timer.start("read_land_use");
+        const LandUseContext lc{file, lonlat_bounds(result.tracks, 0.0),
+                                lonlat_bounds(result.tracks, options.land_use_search_m)};
+        if (ways.land_use_complete) {
+            build_land_use(std::move(ways.land_use), relations.land_use, locator_of(locs), lc, result);
+        } else {
+            read_land_use_near(lc, relations, result);
+        }
+    }
+
+    // Phase 7: roads in the corridor around the tracks.
     if (options.road_corridor_m > 0) {
         timer.start("read_roads");
         RoadContext rc{file, options.road_corridor_m, grid, lonlat_bounds(result.tracks, options.road_corridor_m)};

@@ -27,4 +27,17 @@ std::optional<std::string> area_feature_kind(const osmium::TagList& tags);
 // route=train|railway|tracks|tram|subway|light_rail
 bool is_rail_route(const osmium::TagList& tags);
 
+// type=multipolygon
+bool is_multipolygon(const osmium::TagList& tags);
+
+struct LandUseTag {
+    std::string kind; // the taxonomy's Land use kind
+    std::string tag;  // "landuse=residential"
+};
+
+// The land-use kind of an area's tags (the table in docs/odd.md "Land use"),
+// or nothing for tags that say nothing about the surroundings (landuse=grass,
+// construction, ...). landuse=* is read before natural=* and waterway=*.
+std::optional<LandUseTag> land_use_kind(const osmium::TagList& tags);
+
 } // namespace railodd::ingest

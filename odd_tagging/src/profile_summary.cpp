@@ -32,6 +32,7 @@ constexpr Kind tunnel{"sc.str.tunnel", "Scenery/Structures/Tunnel"};
 constexpr Kind bridge{"sc.str.bridge", "Scenery/Structures/Bridge"};
 constexpr Kind switch_{"sc.lay.switch", "Scenery/Track layout/Switch"};
 constexpr Kind signal{"sc.eqp.signal", "Scenery/Trackside equipment/Signal"};
+constexpr Kind land_use{"sc.env.landuse", "Scenery/Surroundings/Land use"};
 
 bool is(const TaggedElement& e, const Kind& k) { return e.element_id == k.id || e.element == k.path; }
 
@@ -95,6 +96,25 @@ ojson km_by_class(const OddProfile& p, const Taxonomy* taxonomy, const Kind& k, 
             label = "kind: " + std::get<std::string>(*kind); // maxspeed=signals / none
         }
         sums.add(label, range_m(e));
+    }
+    return sums.km_json();
+}
+
+// km per value of the enum attribute `name` of the elements of kind `k`:
+// every taxonomy value listed in its order, then values it does not know.
+ojson km_by_value(const OddProfile& p, const Taxonomy* taxonomy, const Kind& k, const std::string& name) {
+    const Attribute* attribute = taxonomy_attribute(taxonomy, k, name);
+    ClassSums sums;
+    if (attribute) {
+        for (const auto& v : attribute->values) {
+            sums.add(v, 0.0);
+        }
+    }
+    for (const auto& e : p.elements) {
+        if (is(e, k)) {
+            const AttributeValue* v = e.find(name);
+            sums.add(v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "unknown", range_m(e));
+        }
     }
     return sums.km_json();
 }
@@ -210,6 +230,7 @@ nlohmann::ordered_json summarize(const OddProfile& p, const Taxonomy* taxonomy) 
     j["curve_km_by_radius"] = km_by_class(p, taxonomy, curve, "radius");
     j["gradient_km_by_class"] = km_by_class(p, taxonomy, gradient, "gradient");
     j["speed_km_by_class"] = km_by_class(p, taxonomy, speed_limit, "maxspeed");
+    j["landuse_km_by_kind"] = km_by_value(p, taxonomy, land_use, "kind");
     j["level_crossings_by_barrier"] = count_by(p, level_crossing, "barrier");
     j["footpath_crossings"] = count(p, footpath_crossing);
     j["stations"] = count(p, station);
@@ -241,6 +262,7 @@ std::string summary_text(const OddProfile& p, const Taxonomy* taxonomy) {
     add_table(rows, "curves by radius class (km)", field(s, "curve_km_by_radius"), "%.2f");
     add_table(rows, "gradients by class (km)", field(s, "gradient_km_by_class"), "%.2f");
     add_table(rows, "speed limits by class (km)", field(s, "speed_km_by_class"), "%.2f");
+    add_table(rows, "land use by kind (km)", field(s, "landuse_km_by_kind"), "%.2f");
     add_table(rows, "level crossings by barrier", field(s, "level_crossings_by_barrier"), "%.0f");
     rows.push_back({"stations", number_text(field(s, "stations"), "%.0f")});
     rows.push_back({"halts", number_text(field(s, "halts"), "%.0f")});

@@ -1,5 +1,7 @@
 #include "railodd/odd/route.hpp"
 
+#include "route_network.hpp"
+
 #include "railodd/geometry/alignment.hpp"
 #include "railodd/odd/profile_summary.hpp"
 #include "railodd/util/errors.hpp"
@@ -18,183 +20,9 @@
 
 namespace railodd::odd {
 
+using namespace route_detail;
+
 namespace {
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
-
-// An end of an edge's alignment, as an index: 2 * edge (s = 0) or
-// 2 * edge + 1 (s = length). The route search runs over these ends.
-std::size_t end_index(std::size_t edge, bool at_end) { return 2 * edge + (at_end ? 1 : 0); }
-std::size_t edge_of(std::size_t end) { return end / 2; }
-bool at_end(std::size_t end) { return end % 2 == 1; }
-
-struct Network {
-    const geometry::TrackGraph& graph;
-    const geometry::FittedNetwork& fitted;
-    std::vector<double> lengths;                 // per edge, of its alignment
-    std::vector<std::vector<std::size_t>> moves; // per end: the ends a train may continue into at its vertex
-
-    double s_of(std::size_t end) const { return at_end(end) ? lengths[edge_of(end)] : 0.0; }
-
-    std::size_t vertex_of(std::size_t end) const {
-        const auto& e = graph.edges[edge_of(end)];
-        // An alignment fitted against the node order starts at the edge's `to`.
-        return at_end(end) != fitted.edges[edge_of(end)].reversed ? e.to : e.from;
-    }
-
-    // Heading of the track leaving the vertex through this end.
-    double outgoing_heading(std::size_t end) const {
-        const auto& a = fitted.edges[edge_of(end)].alignment;
-        const geometry::Pose p = geometry::evaluate(a, s_of(end));
-        return at_end(end) ? p.hdg + std::numbers::pi : p.hdg;
-    }
-
-    // A chain item is left through its alignment end when chain and alignment
-    // run the same way along the graph edge.
-    std::size_t exit_end(const geometry::ChainItem& item) const {
-        return end_index(item.edge, item.reversed == fitted.edges[item.edge].reversed);
-    }
-    std::size_t entry_end(const geometry::ChainItem& item) const { return exit_end(item) ^ 1U; }
-
-    void link(std::size_t a, std::size_t b) {
-        moves[a].push_back(b);
-        moves[b].push_back(a);
-    }
-};
-
-// The ends of a chain's items at a vertex: its passage through it (or its end there).
-std::vector<std::size_t> chain_ends_at(const Network& n, const geometry::Chain& chain, std::size_t vertex) {
-    std::vector<std::size_t> ends;
-    for (const auto& item : chain.items) {
-        for (const std::size_t end : {n.entry_end(item), n.exit_end(item)}) {
-            if (n.vertex_of(end) == vertex) {
-                ends.push_back(end);
-            }
-        }
-    }
-    return ends;
-}
-
-// A branch tied to a through chain joins only the switch's stem: the through
-// leg leaving the vertex opposite to the branch (the other leg leaves it in
-// the branch's direction, and no train turns back through a switch).
-void link_branch(Network& n, std::size_t branch, const geometry::Chain& through, std::size_t vertex) {
-    const double h = n.outgoing_heading(branch);
-    std::optional<std::size_t> stem;
-    double most_opposite = infinity;
-    for (const std::size_t leg : chain_ends_at(n, through, vertex)) {
-        const double c = std::cos(n.outgoing_heading(leg) - h);
-        if (leg != branch && c < most_opposite) {
-            most_opposite = c;
-            stem = leg;
-        }
-    }
-    if (stem) {
-        n.link(branch, *stem);
-    }
-}
-
-Network build_network(const geometry::TrackGraph& graph, const geometry::FittedNetwork& fitted) {
-    Network n{graph, fitted, {}, std::vector<std::vector<std::size_t>>(2 * fitted.edges.size())};
-    for (const auto& e : fitted.edges) {
-        n.lengths.push_back(geometry::length(e.alignment));
-    }
-    for (const auto& chain : fitted.chains) {
-        if (chain.items.empty()) {
-            continue;
-        }
-        for (std::size_t i = 1; i < chain.items.size(); ++i) {
-            n.link(n.exit_end(chain.items[i - 1]), n.entry_end(chain.items[i]));
-        }
-        if (chain.start.tied && chain.start.to_chain < fitted.chains.size()) {
-            link_branch(n, n.entry_end(chain.items.front()), fitted.chains[chain.start.to_chain], chain.start.vertex);
-        }
-        if (chain.end.tied && chain.end.to_chain < fitted.chains.size()) {
-            link_branch(n, n.exit_end(chain.items.back()), fitted.chains[chain.end.to_chain], chain.end.vertex);
-        }
-    }
-    return n;
-}
-
-struct Path {
-    double length = infinity;
-    std::vector<RoutePiece> pieces;
-};
-
-void add_piece(Path& p, std::size_t edge, double s_from, double s_to) {
-    p.pieces.push_back({edge, s_to < s_from, s_from, s_to, 0.0});
-}
-
-// Zero-length pieces (a station on a vertex) dropped, chainage accumulated.
-void finish(Path& p) {
-    auto empty = [](const RoutePiece& r) { return std::abs(r.s_to - r.s_from) <= 1e-9; };
-    if (!std::all_of(p.pieces.begin(), p.pieces.end(), empty)) {
-        std::erase_if(p.pieces, empty);
-    }
-    double chainage = 0.0;
-    for (auto& r : p.pieces) {
-        r.chainage_start = chainage;
-        chainage += std::abs(r.s_to - r.s_from);
-    }
-}
-
-// Dijkstra over alignment ends ("left the edge here"), from a at its s to b at its s.
-Path shortest_path(const Network& n, const geometry::AttachedFeature& a, const geometry::AttachedFeature& b) {
-    std::vector<double> dist(n.moves.size(), infinity);
-    std::vector<std::ptrdiff_t> pred(n.moves.size(), -1);
-    using Item = std::pair<double, std::size_t>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-    for (const bool forward : {true, false}) {
-        const std::size_t exit = end_index(a.edge, forward);
-        dist[exit] = forward ? n.lengths[a.edge] - a.s : a.s;
-        queue.push({dist[exit], exit});
-    }
-    double best = a.edge == b.edge ? std::abs(b.s - a.s) : infinity;
-    std::ptrdiff_t best_exit = -1, best_entry = -1; // -1: along the shared edge directly
-    while (!queue.empty()) {
-        const auto [d, u] = queue.top();
-        queue.pop();
-        if (d > dist[u] || d >= best) {
-            continue;
-        }
-        for (const std::size_t q : n.moves[u]) {
-            const std::size_t f = edge_of(q);
-            if (f == b.edge && d + std::abs(b.s - n.s_of(q)) < best) {
-                best = d + std::abs(b.s - n.s_of(q));
-                best_exit = static_cast<std::ptrdiff_t>(u);
-                best_entry = static_cast<std::ptrdiff_t>(q);
-            }
-            const std::size_t w = q ^ 1U;
-            if (d + n.lengths[f] < dist[w]) {
-                dist[w] = d + n.lengths[f];
-                pred[w] = static_cast<std::ptrdiff_t>(u);
-                queue.push({dist[w], w});
-            }
-        }
-    }
-    Path path;
-    path.length = best;
-    if (best == infinity) {
-        return path;
-    }
-    if (best_exit < 0) {
-        add_piece(path, a.edge, a.s, b.s);
-        finish(path);
-        return path;
-    }
-    std::vector<std::size_t> exits;
-    for (std::ptrdiff_t u = best_exit; u >= 0; u = pred[static_cast<std::size_t>(u)]) {
-        exits.push_back(static_cast<std::size_t>(u));
-    }
-    std::reverse(exits.begin(), exits.end());
-    add_piece(path, a.edge, a.s, n.s_of(exits.front()));
-    for (std::size_t i = 1; i < exits.size(); ++i) {
-        add_piece(path, edge_of(exits[i]), n.s_of(exits[i] ^ 1U), n.s_of(exits[i]));
-    }
-    add_piece(path, b.edge, n.s_of(static_cast<std::size_t>(best_entry)), b.s);
-    finish(path);
-    return path;
-}
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -280,6 +108,7 @@ std::optional<TaggedElement> on_piece(const TaggedElement& e, const RoutePiece& 
     }
     out.chainage_start = std::min(chainage(a), chainage(b));
     out.chainage_end = std::max(chainage(a), chainage(b));
+    out.reversed = e.reversed != p.reversed; // s now falls as the route's chainage grows
     return out;
 }
 
@@ -299,7 +128,7 @@ Route find_route(const geometry::TrackGraph& graph, const geometry::FittedNetwor
     Path best;
     for (const auto* a : starts) {
         for (const auto* b : ends) {
-            Path p = shortest_path(network, *a, *b);
+            Path p = shortest_path(network, {a->edge, a->s}, {b->edge, b->s});
             if (p.length < best.length) {
                 best = std::move(p);
             }
@@ -311,15 +140,7 @@ Route find_route(const geometry::TrackGraph& graph, const geometry::FittedNetwor
     }
     route.length_m = best.length;
     route.pieces = std::move(best.pieces);
-    std::set<std::int64_t> ways;
-    for (const auto& p : route.pieces) {
-        for (const auto& span : graph.edges[p.edge].ways) {
-            ways.insert(span.way_id);
-        }
-    }
-    for (const auto id : ways) {
-        route.osm_ways.push_back("way:" + std::to_string(id));
-    }
+    route.osm_ways = route_way_ids(graph, route.pieces);
     return route;
 }
 
@@ -344,9 +165,10 @@ OddProfile along_route(const OddProfile& profile, const Route& route, const Taxo
         ids.insert(e.osm_ids.begin(), e.osm_ids.end());
     }
     std::erase_if(out.unparsed, [&](const Unparsed& u) { return !names_any(u.osm_ids, ids); });
-    out.route = route.from + " -> " + route.to;
+    out.route = route.description.empty() ? route.from + " -> " + route.to : route.description;
     out.length_m = route.length_m;
     out.tracks = route.pieces.size();
+    out.along_route = true;
     out.summary = summarize(out, &taxonomy);
     return out;
 }
@@ -360,7 +182,25 @@ nlohmann::ordered_json route_report(const Route& route) {
                           {"s_to", p.s_to},
                           {"chainage_start", p.chainage_start}});
     }
-    return {{"from", route.from}, {"to", route.to}, {"length_m", route.length_m}, {"pieces", std::move(pieces)}};
+    nlohmann::ordered_json j{{"from", route.from}, {"to", route.to}, {"length_m", route.length_m}};
+    if (route.relation != 0) {
+        nlohmann::ordered_json gaps = nlohmann::ordered_json::array();
+        for (const auto& g : route.gaps) {
+            gaps.push_back({{"chainage", g.chainage},
+                            {"after_way", g.after_way},
+                            {"before_way", g.before_way},
+                            {"distance_m", g.distance_m},
+                            {"bridged", g.bridged},
+                            {"bridge_length_m", g.bridge_length_m}});
+        }
+        j["relation"] = route.relation;
+        j["name"] = route.name;
+        j["member_ways"] = route.member_ways;
+        j["ways_on_route"] = route.ways_on_route;
+        j["gaps"] = std::move(gaps);
+    }
+    j["pieces"] = std::move(pieces);
+    return j;
 }
 
 } // namespace railodd::odd

@@ -58,5 +58,6 @@ void tag_track_count(TagContext& ctx);    // single / double / multiple (tag_tra
 void tag_way_attributes(TagContext& ctx); // gauge, electrification, speed, usage, service, direction (tag_ways.cpp)
 void tag_features(TagContext& ctx);       // switches, crossings, structures, stations, signals, ... (tag_features.cpp)
 void tag_surroundings(TagContext& ctx);   // roads running alongside (tag_surroundings.cpp)
+void tag_land_use(TagContext& ctx);       // land-use areas holding the track (tag_landuse.cpp)
 
 } // namespace railodd::odd

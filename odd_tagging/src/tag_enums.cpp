@@ -1,5 +1,5 @@
 // Enumerated OSM tag values: electrified, usage, service,
-// railway:preferred_direction, crossing:barrier.
+// railway:preferred_direction, crossing:barrier, railway:radio.
 #include "railodd/odd/tag_values.hpp"
 
 #include "enum_table.hpp"
@@ -130,6 +130,47 @@ TagValue<Barrier> parse_crossing_barrier(std::string_view raw) {
         {"chain", Barrier::chain},
     }};
     return enums::lookup(raw, table, "crossing:barrier");
+}
+
+const char* to_string(TrainRadio r) {
+    switch (r) {
+    case TrainRadio::gsm_r: return "gsm-r";
+    case TrainRadio::frmcs: return "frmcs";
+    case TrainRadio::analogue: return "analogue";
+    case TrainRadio::none: return "none";
+    }
+    return "none";
+}
+
+TagValue<std::vector<TrainRadio>> parse_train_radio(std::string_view raw) {
+    static constexpr std::array<Spelling<TrainRadio>, 5> table{{
+        {"gsm-r", TrainRadio::gsm_r}, {"frmcs", TrainRadio::frmcs}, {"analogue", TrainRadio::analogue},
+        {"no", TrainRadio::none}, {"none", TrainRadio::none},
+    }};
+    TagValue<std::vector<TrainRadio>> r;
+    std::vector<TrainRadio> out;
+    for (const auto part : text::split(raw, ';')) {
+        // US spelling: the same system, read with a note rather than refused.
+        const bool us = text::lower(text::trim(part)) == "analog";
+        auto one = us ? TagValue<TrainRadio>{TrainRadio::analogue, "", "read 'analog' as 'analogue'"}
+                      : enums::lookup(part, table, "railway:radio");
+        if (!one.ok()) {
+            r.problem = one.problem;
+            return r;
+        }
+        if (!one.note.empty()) {
+            r.note += (r.note.empty() ? "" : "; ") + one.note;
+        }
+        if (std::find(out.begin(), out.end(), *one.value) == out.end()) {
+            out.push_back(*one.value);
+        }
+    }
+    if (out.size() > 1 && std::find(out.begin(), out.end(), TrainRadio::none) != out.end()) {
+        r.problem = text::quoted(raw) + " combines 'no' with a radio system";
+        return r;
+    }
+    r.value = std::move(out);
+    return r;
 }
 
 } // namespace railodd::odd

@@ -1,5 +1,6 @@
 // Tags that OSM carries on the track ways themselves: gauge, electrification,
-// speed limit, line usage, track service and preferred direction, over each
+// speed limit, line usage, track service, preferred direction, train
+// protection and train radio, over each
 // way's stretch of the track. Values the parsers cannot read are recorded in
 // the profile's `unparsed` list with the reason.
 #include "tag_context.hpp"
@@ -134,6 +135,24 @@ void tag_train_protection(TagContext& ctx, std::size_t e, const WayRange& r, con
     }
 }
 
+// Train radio (railway:radio): one element per system; "no" is a stretch
+// without radio (system none). Coverage is not mapped in OSM, so not claimed.
+void tag_train_radio(TagContext& ctx, std::size_t e, const WayRange& r, const std::vector<std::string>& ids) {
+    const std::string text = ingest::tag_or(r.way->tags, "railway:radio");
+    if (text.empty()) {
+        return;
+    }
+    const auto radio = parse_train_radio(text);
+    if (!radio.ok()) {
+        ctx.unparsed(ids, "railway:radio", text, radio.problem);
+        return;
+    }
+    for (const TrainRadio system : *radio.value) {
+        ctx.tag("Connectivity/Communication/Train radio", e, r.s0, r.s1, {{"system", std::string{to_string(system)}}},
+                ids, "osm");
+    }
+}
+
 } // namespace
 
 void tag_way_attributes(TagContext& ctx) {
@@ -149,6 +168,7 @@ void tag_way_attributes(TagContext& ctx) {
             tag_usage(ctx, e, r, ids);
             tag_direction(ctx, e, r, ids);
             tag_train_protection(ctx, e, r, ids);
+            tag_train_radio(ctx, e, r, ids);
         }
     }
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <set>
 #include <string_view>
 
@@ -102,7 +103,7 @@ private:
     double positive(const YAML::Node& parent, const YAML::Node& v, const std::string& what) {
         yaml::require(file_, v ? v : parent, static_cast<bool>(v), what + " is missing");
         const double x = yaml::number(file_, v, what);
-        yaml::require(file_, v, x > 0.0, what + " must be positive, not " + v.Scalar());
+        yaml::require(file_, v, x > 0.0 && std::isfinite(x), what + " must be positive and finite, not " + v.Scalar());
         return x;
     }
 

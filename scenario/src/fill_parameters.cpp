@@ -24,7 +24,7 @@ std::pair<std::string, std::string> map_value(const TemplateContext& ctx, const 
     const std::size_t i = p.context < 0 ? a.element : a.context[static_cast<std::size_t>(p.context)];
     const auto* v = ctx.profile.elements[i].find(p.attribute);
     if (!v) {
-        return {"unknown " + p.attribute, ""};
+        return {"unknown", ""}; // not mapped at this anchor
     }
     if (const double* x = std::get_if<double>(v)) {
         const auto raw = format_number(std::round(*x * 10.0) / 10.0);

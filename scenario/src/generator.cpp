@@ -121,6 +121,7 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
                 run.sizes.push_back(t.parameters[i].values.size());
             }
         }
+        prepare(ctx);
         const Validity valid = validity(ctx);
         const std::vector<Row> rows = rows_for(run.sizes, valid, options);
         run.rows = rows.size();

@@ -17,7 +17,7 @@ namespace {
 constexpr double platform_edge_m = 2.0;  // from the track centre: the edge is ~1.7 m (EBO), people stand just behind it
 constexpr double beside_track_m = 3.5;   // beyond the clearance gauge
 constexpr double crossing_approach_m = 10.0; // on the road, short of the barriers
-constexpr double fallback_speed_kmh = 80.0;
+constexpr double fallback_speed_kmh = 80.0; // where no speed limit is mapped
 
 const ParameterDomain* varied_param(const TemplateContext& ctx, const Row& row, std::size_t dim, std::size_t& value) {
     if (dim + 1 >= row.size() || row[dim + 1] == kUnset) {
@@ -84,18 +84,21 @@ void cover_asset(const TemplateContext& ctx, const Asset& asset, std::vector<Cov
 
 // The map's part of a scenario: the anchor, its context and every stretch of
 // track the anchor point lies on (speed limit, gradient, track count, ...).
-void cover_map(const TemplateContext& ctx, const Anchor& a, std::vector<CoveredValue>& out) {
+std::vector<CoveredValue> cover_map(const TemplateContext& ctx, const Anchor& a,
+                                    const std::vector<std::size_t>& on_line) {
+    std::vector<CoveredValue> out;
     cover_element(ctx, ctx.profile.elements[a.element], out);
     for (const auto i : a.context) {
         cover_element(ctx, ctx.profile.elements[i], out);
     }
-    for (std::size_t i = 0; i < ctx.profile.elements.size(); ++i) {
+    for (const std::size_t i : on_line) {
         const auto& e = ctx.profile.elements[i];
-        if (i != a.element && !e.point && ctx.lines.line_of(e) == a.line && e.chainage_start <= a.chainage &&
-            e.chainage_end >= a.chainage && std::find(a.context.begin(), a.context.end(), i) == a.context.end()) {
+        if (i != a.element && !e.point && e.chainage_start <= a.chainage && e.chainage_end >= a.chainage &&
+            std::find(a.context.begin(), a.context.end(), i) == a.context.end()) {
             cover_element(ctx, e, out);
         }
     }
+    return out;
 }
 
 Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asset& asset, const Anchor& a, double side) {
@@ -117,6 +120,26 @@ Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asse
 
 } // namespace
 
+void prepare(TemplateContext& ctx) {
+    ctx.default_assets["Ego"] = ctx.catalog.under(ctx.tmpl.ego.asset_class).front();
+    for (const auto& a : ctx.tmpl.actors) {
+        ctx.default_assets[a.name] = ctx.catalog.under(a.asset_class).front();
+    }
+    std::map<std::size_t, std::vector<std::size_t>> by_line;
+    for (const auto& a : ctx.anchors) {
+        by_line[a.line];
+    }
+    for (std::size_t i = 0; i < ctx.profile.elements.size(); ++i) {
+        if (const auto it = by_line.find(ctx.lines.line_of(ctx.profile.elements[i])); it != by_line.end()) {
+            it->second.push_back(i);
+        }
+    }
+    ctx.anchor_cover.clear();
+    for (const auto& a : ctx.anchors) {
+        ctx.anchor_cover.push_back(cover_map(ctx, a, by_line[a.line]));
+    }
+}
+
 const Asset& asset_for(const TemplateContext& ctx, const Row& row, const std::string& actor) {
     for (std::size_t d = 0; d < ctx.varied.size(); ++d) {
         std::size_t v = 0;
@@ -125,11 +148,7 @@ const Asset& asset_for(const TemplateContext& ctx, const Row& row, const std::st
             return *ctx.catalog.find(p->values[v]);
         }
     }
-    std::string klass = ctx.tmpl.ego.asset_class;
-    for (const auto& a : ctx.tmpl.actors) {
-        klass = a.name == actor ? a.asset_class : klass;
-    }
-    return *ctx.catalog.under(klass).front();
+    return *ctx.default_assets.at(actor);
 }
 
 EgoSpeed ego_speed_for(const TemplateContext& ctx, const Row& row) {
@@ -146,7 +165,10 @@ EgoSpeed ego_speed_for(const TemplateContext& ctx, const Row& row) {
         if (std::isfinite(a.speed_limit_kmh)) {
             return {p->limit_fractions[v] * a.speed_limit_kmh, "speed limit"};
         }
-        return {p->limit_fractions[v] * asset_for(ctx, row, "Ego").max_speed_mps * 3.6, "asset max speed"};
+        // No limit mapped here: a fraction of a moderate line speed, capped by
+        // the train, rather than of the train's top speed (trams, sidings).
+        return {p->limit_fractions[v] * std::min(fallback_speed_kmh, asset_for(ctx, row, "Ego").max_speed_mps * 3.6),
+                "default line speed"};
     }
     if (std::isfinite(a.speed_limit_kmh)) { // no speed parameter: run at the line speed
         return {a.speed_limit_kmh, "speed limit"};
@@ -193,7 +215,8 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
         }
     }
     sc.trigger_distance_m = std::isfinite(trigger) ? trigger : 0.0;
-    cover_map(ctx, a, rec.odd_elements);
+    const auto& map = ctx.anchor_cover[row[0]];
+    rec.odd_elements.insert(rec.odd_elements.end(), map.begin(), map.end());
     fill_parameters(ctx, row, speed, rec);
     return rec;
 }

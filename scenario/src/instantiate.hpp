@@ -4,6 +4,7 @@
 #include "railodd/scenario/generator.hpp"
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,14 @@ struct TemplateContext {
     const GenerateOptions& options;
     const std::vector<Anchor>& anchors;
     std::vector<std::size_t> varied; // indices into tmpl.parameters of dimensions 1..n (0 is the anchor)
+    std::map<std::string, const Asset*> default_assets; // per actor ("Ego" too): the first asset of its class
+    std::vector<std::vector<CoveredValue>> anchor_cover; // per anchor: what of the map it exercises
 };
+
+// Fills the context's per-template caches: default assets and, per anchor,
+// the map elements it exercises (the anchor, its context, the stretches it
+// lies on), so that rows do not rescan the profile.
+void prepare(TemplateContext& ctx);
 
 // The ego's speed in km/h for a row, and what it was derived from.
 struct EgoSpeed {

@@ -1,11 +1,12 @@
 // Pairwise coverage is built greedily, one row at a time, around the first
 // uncovered pair (AETG, Cohen et al. 1997, without the random candidates so
 // that it is deterministic): each further dimension takes the valid value that
-// covers most uncovered pairs with the values already chosen. A pair no valid
-// row can hold is found when the greedy completion fails for every value
-// ordering we try, and is counted as infeasible rather than left as a gap.
+// covers most uncovered pairs with the values already chosen, backtracking
+// where the constraints leave a later dimension no value. A pair no valid row
+// can hold is counted as infeasible rather than left as a gap.
 #include "railodd/scenario/strategies.hpp"
 
+#include <algorithm>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -42,15 +43,18 @@ public:
         }
     }
     std::size_t left() const { return left_; }
-    // The first open pair in (i, j, vi, vj) order.
-    bool first_open(std::size_t& i, std::size_t& vi, std::size_t& j, std::size_t& vj) const {
-        for (i = 0; i < n_; ++i) {
-            for (j = i + 1; j < n_; ++j) {
-                const auto& f = flags_[i * n_ + j];
-                for (std::size_t k = 0; k < f.size(); ++k) {
-                    if (f[k]) {
-                        vi = k / sizes_[j];
-                        vj = k % sizes_[j];
+    // The first open pair in (i, j, vi, vj) order. Pairs never reopen, so the
+    // search resumes where the last one stopped: linear over a whole run.
+    bool first_open(std::size_t& i, std::size_t& vi, std::size_t& j, std::size_t& vj) {
+        for (; ci_ < n_; ++ci_, cj_ = ci_ + 1, ck_ = 0) {
+            for (; cj_ < n_; ++cj_, ck_ = 0) {
+                const auto& f = flags_[ci_ * n_ + cj_];
+                for (; ck_ < f.size(); ++ck_) {
+                    if (f[ck_]) {
+                        i = ci_;
+                        j = cj_;
+                        vi = ck_ / sizes_[j];
+                        vj = ck_ % sizes_[j];
                         return true;
                     }
                 }
@@ -64,38 +68,64 @@ private:
     std::size_t n_;
     std::vector<std::vector<char>> flags_;
     std::size_t left_ = 0;
+    std::size_t ci_ = 0, cj_ = 1, ck_ = 0; // first_open's cursor
 };
 
-// Completes `row` dimension by dimension, each time with the valid value that
-// closes most open pairs (lowest index on ties). False when some dimension has
-// no valid value left.
-bool complete(Row& row, const std::vector<std::size_t>& sizes, const Validity& valid, const PairTable& open) {
-    for (std::size_t k = 0; k < sizes.size(); ++k) {
-        if (row[k] != kUnset) {
-            continue;
+// Completes `row` dimension by dimension, each time trying the valid values
+// that close most open pairs first (lowest index on ties), and backtracking
+// when a later dimension is left without a valid value. The search is bounded
+// (`budget` rows tried) so that a pathological constraint set cannot stall a
+// run; a pair whose completion runs out of budget counts as infeasible.
+class Completion {
+public:
+    Completion(const std::vector<std::size_t>& sizes, const Validity& valid, const PairTable& open)
+        : sizes_(sizes), valid_(valid), open_(open) {}
+
+    bool operator()(Row& row) {
+        budget_ = 20000;
+        return fill(row, 0);
+    }
+
+private:
+    const std::vector<std::size_t>& sizes_;
+    const Validity& valid_;
+    const PairTable& open_;
+    std::size_t budget_ = 0;
+
+    bool fill(Row& row, std::size_t k) {
+        while (k < sizes_.size() && row[k] != kUnset) {
+            ++k;
         }
-        std::size_t best = kUnset, best_gain = 0;
-        for (std::size_t v = 0; v < sizes[k]; ++v) {
+        if (k == sizes_.size()) {
+            return valid_(row);
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> order; // (-gain, value) of the valid values
+        for (std::size_t v = 0; v < sizes_[k]; ++v) {
             row[k] = v;
-            if (!valid(row)) {
+            if (budget_ == 0) {
+                break;
+            }
+            --budget_;
+            if (!valid_(row)) {
                 continue;
             }
             std::size_t gain = 0;
-            for (std::size_t m = 0; m < sizes.size(); ++m) {
-                gain += m != k && row[m] != kUnset && open.open(k, v, m, row[m]) ? 1 : 0;
+            for (std::size_t m = 0; m < sizes_.size(); ++m) {
+                gain += m != k && row[m] != kUnset && open_.open(k, v, m, row[m]) ? 1 : 0;
             }
-            if (best == kUnset || gain > best_gain) {
-                best = v;
-                best_gain = gain;
+            order.emplace_back(static_cast<std::size_t>(-1) - gain, v);
+        }
+        std::sort(order.begin(), order.end());
+        for (const auto& [rank, v] : order) {
+            row[k] = v;
+            if (fill(row, k + 1)) {
+                return true;
             }
         }
-        row[k] = best;
-        if (best == kUnset) {
-            return false;
-        }
+        row[k] = kUnset;
+        return false;
     }
-    return valid(row);
-}
+};
 
 bool empty_domain(const std::vector<std::size_t>& sizes) {
     for (const auto s : sizes) {
@@ -161,12 +191,13 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
         return full_factorial(sizes, valid);
     }
     PairTable open(sizes);
+    Completion complete(sizes, valid, open);
     std::size_t i = 0, vi = 0, j = 0, vj = 0;
     while (open.first_open(i, vi, j, vj)) {
         Row r(sizes.size(), kUnset);
         r[i] = vi;
         r[j] = vj;
-        if (valid(r) && complete(r, sizes, valid, open)) {
+        if (valid(r) && complete(r)) {
             open.close_row(r);
             rows.push_back(std::move(r));
         } else {
@@ -218,6 +249,7 @@ PairStats pair_coverage(const std::vector<std::size_t>& sizes, const Validity& v
     }
     // Feasibility of each pair: the pairwise builder's test, a valid completion.
     PairTable probe(sizes);
+    Completion complete(sizes, valid, probe);
     for (std::size_t i = 0; i < sizes.size(); ++i) {
         for (std::size_t j = i + 1; j < sizes.size(); ++j) {
             for (std::size_t vi = 0; vi < sizes[i]; ++vi) {
@@ -226,7 +258,7 @@ PairStats pair_coverage(const std::vector<std::size_t>& sizes, const Validity& v
                     r[i] = vi;
                     r[j] = vj;
                     const bool covered = !held.open(i, vi, j, vj);
-                    if (covered || (valid(r) && complete(r, sizes, valid, probe))) {
+                    if (covered || (valid(r) && complete(r))) {
                         ++stats.feasible;
                         stats.covered += covered ? 1 : 0;
                     } else {

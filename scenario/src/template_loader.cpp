@@ -74,6 +74,8 @@ private:
                 static_cast<ElementMatch&>(r) = match(c, what + ": context", {"element", "where", "within_m"});
                 if (c["within_m"]) {
                     r.within_m = yaml::number(file_, c["within_m"], what + ": context 'within_m'");
+                    yaml::require(file_, c["within_m"], r.within_m > 0.0,
+                                  what + ": context 'within_m' must be positive, not " + c["within_m"].Scalar());
                 }
                 t.context.push_back(std::move(r));
             }
@@ -164,6 +166,12 @@ private:
             if (node["run_up_m"]) t.ego.run_up_m = yaml::number(file_, node["run_up_m"], what + ": 'run_up_m'");
             if (node["min_run_up_m"]) t.ego.min_run_up_m = yaml::number(file_, node["min_run_up_m"], what + ": 'min_run_up_m'");
             if (node["overrun_m"]) t.ego.overrun_m = yaml::number(file_, node["overrun_m"], what + ": 'overrun_m'");
+            for (const char* key : {"run_up_m", "min_run_up_m", "overrun_m"}) {
+                if (const auto v = node[key]) {
+                    yaml::require(file_, v, yaml::number(file_, v, key) >= 0.0,
+                                  what + ": ego '" + key + "' must not be negative, not " + v.Scalar());
+                }
+            }
         }
         const YAML::Node& at = node ? node : YAML::Node();
         element(at, t.ego.asset_class, what + ": ego");
@@ -298,10 +306,13 @@ ParameterDomain TemplateLoader::parameter(const std::string& name, const YAML::N
         if (from == "anchor") {
             source = &t.anchor;
         } else if (from.rfind("context", 0) == 0) {
-            const auto index = parse_number(from.substr(std::min<std::size_t>(from.size(), 8)));
-            p.context = index ? static_cast<int>(*index) : -2;
-            yaml::require(file_, spec["from"], index && *index >= 0 && *index < static_cast<double>(t.context.size()),
+            // "context N": one space, then a whole index ("context 0.5" or "contexts0" are not indices).
+            const double index =
+                (from.size() > 8 && from[7] == ' ' ? parse_number(from.substr(8)) : std::nullopt).value_or(-1.0);
+            yaml::require(file_, spec["from"],
+                          index >= 0 && index == std::floor(index) && index < static_cast<double>(t.context.size()),
                           w + ": 'from' must be anchor or context N with N < " + std::to_string(t.context.size()));
+            p.context = static_cast<int>(index);
             source = &t.context[static_cast<std::size_t>(p.context)];
         } else {
             yaml::fail(file_, spec["from"], w + ": 'from' must be anchor or context N, not '" + from + "'");

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,28 @@ struct Feature {
     bool on_track = false; // a node of a selected track way
 };
 
+// A land-use area (landuse=*, natural=wood|water, waterway=riverbank, ...)
+// that may hold a track, its outline projected and simplified to about a
+// metre so that memory stays small whatever the mapped detail
+// (docs/ingest.md "Land use").
+struct LandUseArea {
+    std::string osm_type; // "way" (a closed way) or "relation" (a multipolygon)
+    std::int64_t id = 0;
+    std::string kind;     // urban, suburban, rural, industrial, forest, agricultural or water
+    std::string tag;      // what the kind was read from, e.g. "landuse=residential"
+    std::vector<std::vector<XY>> rings; // closed (last point != first), inside by the even-odd rule
+    double area_m2 = 0.0; // outer rings minus inner rings
+};
+
+// The rail route relation selected with --relation: its member ways in member
+// order, nested routes expanded in place (a route_master: its first route only,
+// as its routes run in both directions).
+struct RouteRelation {
+    std::int64_t id = 0;
+    Tags tags;
+    std::vector<std::int64_t> ways;
+};
+
 struct Dropped {
     std::string kind;     // "track", "road" or "feature"
     std::string osm_type; // "node", "way", "relation" or "ogr_feature"
@@ -78,6 +101,8 @@ struct IngestCounts {
     std::size_t output_road_ways = 0;
     std::size_t output_features = 0;
     std::size_t missing_track_nodes = 0;
+    std::size_t input_land_use = 0;  // land-use ways and multipolygons read
+    std::size_t output_land_use = 0; // of those, assembled and near the tracks
 };
 
 struct IngestResult {
@@ -87,6 +112,8 @@ struct IngestResult {
     std::vector<Way> tracks;
     std::vector<Way> roads;
     std::vector<Feature> features;
+    std::vector<LandUseArea> land_use; // by osm_type, then id
+    std::optional<RouteRelation> relation;
     IngestCounts counts;
     std::vector<Dropped> dropped;
     std::vector<Repair> repairs;

@@ -16,6 +16,7 @@ namespace railodd::odd {
 //   {"length_km", "tracks", "elements",
 //    "curve_km_by_radius": {CLASS: km}, "gradient_km_by_class": {CLASS: km},
 //    "speed_km_by_class": {CLASS: km},              // taxonomy bin order, every class listed
+//    "landuse_km_by_kind": {KIND: km},              // taxonomy value order, every kind listed
 //    "level_crossings_by_barrier": {VALUE: n}, "stations", "halts", "platforms",
 //    "tunnels": {"count", "length_km"}, "bridges": {"count", "length_km"},
 //    "switches", "signals_by_category": {CATEGORY: n}, "unparsed_values"}

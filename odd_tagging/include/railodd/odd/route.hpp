@@ -1,7 +1,8 @@
 #pragma once
-// A route between two stations over the track graph (`railodd convert
-// --from NAME --to NAME`, docs/odd.md "Routes"): the shortest path a train
-// can run, with its own chainage, and the ODD profile along it.
+// A route over the track graph with its own chainage, and the ODD profile
+// along it (docs/odd.md "Routes"): between two stations (`railodd convert
+// --from NAME --to NAME`, the shortest path a train can run) or along an OSM
+// route relation (`--relation ID`, its member ways in member order).
 #include "railodd/geometry/feature_attachment.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/geometry/track_graph.hpp"
@@ -10,6 +11,7 @@
 #include "railodd/odd/taxonomy.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,12 +30,29 @@ struct RoutePiece {
     double chainage_start = 0.0; // route chainage at s_from
 };
 
+// Where consecutive member ways of a relation do not meet.
+struct RouteGap {
+    double chainage = 0.0;       // route chainage at the gap
+    std::int64_t after_way = 0;  // the member way the route leaves
+    std::int64_t before_way = 0; // the member way it continues on
+    double distance_m = 0.0;     // straight line between the two ends
+    bool bridged = false;        // joined by the shortest path over the selected tracks
+    double bridge_length_m = 0.0;
+};
+
 struct Route {
-    std::string from; // the station names as found in the data
+    std::string from; // the station names as found in the data (a relation's from/to tags)
     std::string to;
+    std::string description; // odd_profile's route description; empty: "FROM -> TO"
     double length_m = 0.0;
     std::vector<RoutePiece> pieces;  // in travel order
     std::vector<std::string> osm_ways; // "way:ID" of the edges on the route, for unparsed values
+    // Routes along a relation only:
+    std::int64_t relation = 0;
+    std::string name;
+    std::size_t member_ways = 0;     // way members of the relation (platforms included)
+    std::size_t ways_on_route = 0;   // of those, track ways of the selection that the route runs
+    std::vector<RouteGap> gaps;
 };
 
 // The shortest route from the station (halt, stop, tram stop) named `from`
@@ -48,6 +67,20 @@ Route find_route(const geometry::TrackGraph& graph, const geometry::FittedNetwor
                  const geometry::Attachment& attachment, const std::vector<ingest::Feature>& features,
                  const std::string& from, const std::string& to);
 
+// The route along the rail route relation `relation` (read by the OSM reader
+// with --relation): its member ways in member order, each run in the
+// direction that continues from the previous one (the first towards the
+// second). Where consecutive members do not meet, the shortest path over the
+// selected tracks bridges the gap; where none exists the route jumps to the
+// next member and the gap is listed (route.gaps, report.json) rather than
+// refused, as extracts clip relations. Member ways that are not tracks of
+// the selection (platforms, ways outside the extract) are skipped. Throws
+// railodd::InputError naming `file` and the relation when no member is a
+// track of the graph.
+Route relation_route(const geometry::TrackGraph& graph, const geometry::FittedNetwork& fitted,
+                     const std::vector<ingest::Way>& tracks, const ingest::RouteRelation& relation,
+                     const std::string& file);
+
 // The profile along the route: elements on the route's pieces, clipped to
 // them, with chainage along the route (ends swapped on reversed pieces so
 // chainage_start <= chainage_end), ordered by chainage; road_id and s stay
@@ -56,7 +89,9 @@ Route find_route(const geometry::TrackGraph& graph, const geometry::FittedNetwor
 OddProfile along_route(const OddProfile& profile, const Route& route, const Taxonomy& taxonomy);
 
 // report.json's "route" section: {from, to, length_m, pieces: [{edge,
-// reversed, s_from, s_to, chainage_start}]}.
+// reversed, s_from, s_to, chainage_start}]}; along a relation also
+// {relation, name, member_ways, ways_on_route, gaps: [{chainage, after_way,
+// before_way, distance_m, bridged, bridge_length_m}]} after length_m.
 nlohmann::ordered_json route_report(const Route& route);
 
 } // namespace railodd::odd

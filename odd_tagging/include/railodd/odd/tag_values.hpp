@@ -77,6 +77,13 @@ enum class Barrier { no, yes, half, double_half, full, gate, chain };
 const char* to_string(Barrier b);
 TagValue<Barrier> parse_crossing_barrier(std::string_view text);
 
+// Train radio (railway:radio): "gsm-r", "frmcs", "analogue" ("analog" with a
+// note), "no"/"none"; several separated by ';' ("gsm-r;analogue" during a
+// changeover). "no" combined with a system is a contradiction, not a value.
+enum class TrainRadio { gsm_r, frmcs, analogue, none };
+const char* to_string(TrainRadio r);
+TagValue<std::vector<TrainRadio>> parse_train_radio(std::string_view text);
+
 // --- signals (railway:signal:*) ---------------------------------------------
 
 enum class SignalCategory {

@@ -45,7 +45,7 @@ struct ScenarioRecord {
     Anchor anchor;
     std::vector<std::pair<std::string, std::string>> assets; // actor -> asset id
     std::vector<CoveredValue> odd_elements;
-    std::string speed_basis; // "parameter", "speed limit", "asset max speed"
+    std::string speed_basis; // "parameter", "speed limit", "default line speed", "default"
 };
 
 struct TemplateRun {

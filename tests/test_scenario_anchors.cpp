@@ -1,0 +1,151 @@
+// Anchoring templates on a hand-made profile whose geometry is known: which
+// places satisfy a requirement, the lane positions around them, and the
+// chainage-to-road mapping on forward and reversed route pieces.
+#include "railodd/odd/taxonomy.hpp"
+#include "railodd/scenario/anchors.hpp"
+
+#include "odd_profile_support.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace railodd;
+using namespace railodd::scenario;
+using railodd::test::tagged;
+
+namespace {
+
+const std::string straight = "Scenery/Track geometry/Horizontal/Straight";
+const std::string curve = "Scenery/Track geometry/Horizontal/Curve";
+const std::string crossing = "Scenery/Crossings/Level crossing";
+
+// One track: road 1 from chainage 0 to 1000 (a 250 m curve at 100-350), road 2
+// from 1000 to 1600 (its s from 0); crossings at 450 (open) and 1200 (full).
+odd::OddProfile profile() {
+    odd::OddProfile p;
+    p.elements = {
+        tagged(straight, "sc.geo.hz.straight", {}, "1", 0, 100, 0, 100, {"way:1"}),
+        tagged(curve, "sc.geo.hz.curve", {{"radius", 250.0}}, "1", 100, 350, 100, 350, {"way:1"}),
+        tagged(straight, "sc.geo.hz.straight", {}, "1", 350, 1000, 350, 1000, {"way:1"}),
+        tagged(straight, "sc.geo.hz.straight", {}, "2", 0, 600, 1000, 1600, {"way:2"}),
+        tagged("Operational Conditions/Speed/Speed limit", "op.speed.limit", {{"maxspeed", 120.0}}, "1", 0, 1000, 0,
+               1000, {"way:1"}),
+        tagged(crossing, "sc.xing.level", {{"barrier", std::string{"no"}}}, "1", 450, 450, 450, 450, {"node:5"}),
+        tagged(crossing, "sc.xing.level", {{"barrier", std::string{"full"}}}, "2", 200, 200, 1200, 1200, {"node:6"}),
+    };
+    return p;
+}
+
+Template crossing_after_curve(double within, double max_radius) {
+    Template t;
+    t.id = "t";
+    t.anchor.element = crossing;
+    ContextRequirement c;
+    c.element = curve;
+    c.within_m = within;
+    c.where.push_back({"radius", std::nullopt, max_radius, {}, 0});
+    t.context.push_back(c);
+    t.ego.run_up_m = 400;
+    t.ego.min_run_up_m = 100;
+    t.ego.overrun_m = 200;
+    return t;
+}
+
+} // namespace
+
+TEST(ScenarioAnchors, LineIndexMapsChainageToRoadAndS) {
+    const auto p = profile();
+    const LineIndex lines(p);
+    EXPECT_DOUBLE_EQ(lines.start(0), 0.0);
+    EXPECT_DOUBLE_EQ(lines.end(0), 1600.0);
+    const auto a = lines.at(0, 1200.0);
+    ASSERT_TRUE(a);
+    EXPECT_EQ(a->road_id, "2");
+    EXPECT_DOUBLE_EQ(a->s, 200.0);
+    EXPECT_EQ(a->lane_id, -1);
+    EXPECT_FALSE(a->reversed);
+    EXPECT_FALSE(lines.at(0, 1700.0));
+    EXPECT_FALSE(lines.at(3, 10.0));
+    const auto w = lines.waypoints(0, 300.0, 1300.0);
+    ASSERT_EQ(w.size(), 3u);
+    EXPECT_EQ(w[0].road_id, "1");
+    EXPECT_DOUBLE_EQ(w[0].s, 300.0);
+    EXPECT_EQ(w[1].road_id, "2");
+    EXPECT_DOUBLE_EQ(w[1].s, 150.0); // the middle of road 2's run, chainage 1000-1300
+    EXPECT_EQ(w[2].road_id, "2");
+    EXPECT_DOUBLE_EQ(w[2].s, 300.0);
+}
+
+TEST(ScenarioAnchors, ReversedRoutePieceRunsAgainstS) {
+    odd::OddProfile p;
+    p.along_route = true;
+    auto e = tagged(straight, "sc.geo.hz.straight", {}, "5", 0, 100, 0, 100, {"way:9"});
+    e.reversed = true;
+    e.track = 4;
+    auto f = tagged(straight, "sc.geo.hz.straight", {}, "6", 0, 50, 100, 150, {"way:9"});
+    f.track = 7; // another edge: on a route every element lies on the one line
+    p.elements = {e, f};
+    const LineIndex lines(p);
+    const auto a = lines.at(0, 30.0);
+    ASSERT_TRUE(a);
+    EXPECT_EQ(a->road_id, "5");
+    EXPECT_DOUBLE_EQ(a->s, 70.0);
+    EXPECT_TRUE(a->reversed);
+    const auto b = lines.at(0, 120.0);
+    ASSERT_TRUE(b);
+    EXPECT_EQ(b->road_id, "6");
+    EXPECT_DOUBLE_EQ(b->s, 20.0);
+}
+
+TEST(ScenarioAnchors, ContextMustEndWithinReachBeforeTheAnchor) {
+    const auto p = profile();
+    const LineIndex lines(p);
+    // The curve ends at 350: 100 m before the first crossing, 850 m before the second.
+    const auto near = find_anchors(p, lines, crossing_after_curve(200, 300));
+    ASSERT_EQ(near.anchors.size(), 1u);
+    const Anchor& a = near.anchors[0];
+    EXPECT_EQ(p.elements[a.element].osm_ids, std::vector<std::string>{"node:5"});
+    EXPECT_DOUBLE_EQ(a.chainage, 450.0);
+    ASSERT_EQ(a.context.size(), 1u);
+    EXPECT_EQ(p.elements[a.context[0]].element, curve);
+    EXPECT_DOUBLE_EQ(a.start_chainage, 50.0);
+    EXPECT_DOUBLE_EQ(a.end_chainage, 650.0);
+    EXPECT_DOUBLE_EQ(a.speed_limit_kmh, 120.0);
+    EXPECT_EQ(a.place.road_id, "1");
+    EXPECT_DOUBLE_EQ(a.place.s, 450.0);
+
+    EXPECT_EQ(find_anchors(p, lines, crossing_after_curve(900, 300)).anchors.size(), 2u);
+    EXPECT_TRUE(find_anchors(p, lines, crossing_after_curve(900, 200)).anchors.empty()); // radius too large
+}
+
+TEST(ScenarioAnchors, ConditionsAndRunUp) {
+    const auto p = profile();
+    const LineIndex lines(p);
+    Template t;
+    t.anchor.element = crossing;
+    t.anchor.where.push_back({"barrier", std::nullopt, std::nullopt, {"full", "half"}, 0});
+    t.ego.run_up_m = 5000; // more than the track has: starts where the track begins
+    t.ego.min_run_up_m = 100;
+    auto r = find_anchors(p, lines, t);
+    ASSERT_EQ(r.anchors.size(), 1u);
+    EXPECT_EQ(r.anchors[0].place.road_id, "2");
+    EXPECT_DOUBLE_EQ(r.anchors[0].start_chainage, 0.0);
+    EXPECT_DOUBLE_EQ(r.anchors[0].end_chainage, 1400.0);
+    EXPECT_TRUE(std::isnan(r.anchors[0].speed_limit_kmh)); // the limit is mapped on road 1 only
+
+    t.anchor.where.clear();
+    t.ego.min_run_up_m = 500; // the open crossing at 450 has too little track before it
+    r = find_anchors(p, lines, t);
+    ASSERT_EQ(r.anchors.size(), 1u);
+    ASSERT_EQ(r.skipped.size(), 1u);
+    EXPECT_EQ(p.elements[r.skipped[0].element].osm_ids, std::vector<std::string>{"node:5"});
+    EXPECT_NE(r.skipped[0].reason.find("450 m of track before the anchor"), std::string::npos) << r.skipped[0].reason;
+}
+
+TEST(ScenarioAnchors, MatchesElementsBelowThePath) {
+    const auto p = profile();
+    ElementMatch m;
+    m.element = "Scenery/Track geometry/Horizontal";
+    EXPECT_TRUE(matches(p.elements[1], m));
+    m.element = "Scenery/Track geometry/Horiz"; // a prefix of a name is not a parent
+    EXPECT_FALSE(matches(p.elements[1], m));
+}
