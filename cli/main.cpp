@@ -1,6 +1,8 @@
 // railodd: OpenStreetMap / GIS railway data to simulation maps and scenarios.
+#include "batch_command.hpp"
 #include "command.hpp"
 #include "convert_command.hpp"
+#include "merge_command.hpp"
 #include "profile_command.hpp"
 #include "sample_command.hpp"
 #include "scenarios_command.hpp"
@@ -19,7 +21,9 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string{"railodd 0.1.0"});
 
     std::vector<std::unique_ptr<cli::Command>> commands;
+    commands.push_back(std::make_unique<cli::BatchCommand>());
     commands.push_back(std::make_unique<cli::ConvertCommand>());
+    commands.push_back(std::make_unique<cli::MergeCommand>());
     commands.push_back(std::make_unique<cli::ProfileCommand>());
     commands.push_back(std::make_unique<cli::SampleCommand>());
     commands.push_back(std::make_unique<cli::ScenariosCommand>());

@@ -19,8 +19,10 @@ namespace railodd::test {
 inline std::string straight_track_opl() {
     std::string opl, refs;
     for (int i = 0; i <= 20; ++i) {
-        opl += "n" + std::to_string(i + 1) + " v1 x" + std::to_string(10.0 + 0.0013443 * i) + " y48.0\n";
-        refs += (i ? ",n" : "n") + std::to_string(i + 1);
+        // append(), not "n" + ...: GCC 12 warns (-Wrestrict) on those temporaries
+        opl.append("n").append(std::to_string(i + 1)).append(" v1 x").append(std::to_string(10.0 + 0.0013443 * i));
+        opl.append(" y48.0\n");
+        refs.append(i ? ",n" : "n").append(std::to_string(i + 1));
     }
     return opl + "w1 v1 Trailway=rail N" + refs + "\n";
 }

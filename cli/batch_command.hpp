@@ -1,0 +1,34 @@
+#pragma once
+// railodd batch ROUTES.yaml -o OUTROOT: convert (and optionally generate
+// scenarios for) many routes in parallel child processes, skip the ones that
+// are up to date, and write a per-route summary (docs/batch.md).
+// Exit codes: 0 every route ok or skipped; else the largest exit code of the
+// failed routes (2 input, 3 output, 4 internal or killed); 1 usage, 2 invalid
+// routes file, 3 OUTROOT not writable.
+#include "command.hpp"
+
+#include <string>
+
+namespace railodd::cli {
+
+struct BatchOptions {
+    std::string routes_file;
+    std::string outroot;
+    unsigned jobs = 0;          // 0: hardware threads
+    std::string shard = "0/1";  // I/N, 0-based: matches SLURM_ARRAY_TASK_ID and JOB_COMPLETION_INDEX
+    bool force = false;
+};
+
+class BatchCommand : public Command {
+public:
+    CLI::App* add(CLI::App& parent) override;
+    void setup() override;
+    int run() override;
+
+private:
+    BatchOptions opt_;
+    unsigned shard_index_ = 0;
+    unsigned shard_count_ = 1;
+};
+
+} // namespace railodd::cli

@@ -1,0 +1,216 @@
+#include "batch_runner.hpp"
+
+#include "railodd/util/errors.hpp"
+
+#include <chrono>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/ioctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace railodd::cli {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+BatchProgress::BatchProgress(std::size_t total, unsigned jobs, bool terminal)
+    : total_(total), jobs_(jobs), terminal_(terminal) {}
+
+void BatchProgress::clear_line() {
+    if (line_shown_) {
+        std::cerr << "\r\033[K";
+        line_shown_ = false;
+    }
+}
+
+void BatchProgress::finished(const std::string& id, const std::string& status, double seconds,
+                             const std::string& detail) {
+    ++done_;
+    last_finish_ = Clock::now();
+    if (status != "skipped") {
+        ++ran_;
+        ran_seconds_ += seconds;
+    }
+    clear_line();
+    char secs[32];
+    std::snprintf(secs, sizeof secs, "%.1f s", seconds);
+    std::cerr << '[' << done_ << '/' << total_ << "] " << status << ' ' << id;
+    if (status != "skipped") {
+        std::cerr << ' ' << secs;
+    }
+    std::cerr << (detail.empty() ? "" : ": ") << detail << '\n';
+}
+
+void BatchProgress::running(const std::vector<std::pair<std::string, std::string>>& id_phase) {
+    if (!terminal_) {
+        return;
+    }
+    std::ostringstream line;
+    line << "routes " << done_ << '/' << total_ << ", running:";
+    for (const auto& [id, phase] : id_phase) {
+        line << ' ' << id << " (" << phase << ')';
+    }
+    // Estimate from the routes finished so far, spread over the job slots,
+    // counting down between finishes.
+    const std::size_t left = total_ - done_;
+    if (ran_ > 0 && left > 0) {
+        const double since = std::chrono::duration<double>(Clock::now() - last_finish_).count();
+        const double eta = std::max(0.0, ran_seconds_ / ran_ * std::ceil(double(left) / jobs_) - since);
+        line << ", ETA " << static_cast<long>(eta + 0.5) << " s";
+    }
+    std::string text = line.str();
+    winsize ws{};
+    if (::ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 1 && text.size() >= ws.ws_col) {
+        text.resize(ws.ws_col - 1); // a wrapped line could not be redrawn with \r
+    }
+    std::cerr << "\r\033[K" << text << std::flush;
+    line_shown_ = true;
+}
+
+void BatchProgress::close() { clear_line(); }
+
+namespace {
+
+// The last "railodd: ..." line of a failed step's log (main() prints every
+// error that way), else its last non-empty line.
+std::string error_line(const fs::path& log) {
+    std::ifstream in(log);
+    std::string line, last, last_railodd;
+    while (std::getline(in, line)) {
+        if (!line.empty()) {
+            last = line;
+        }
+        if (line.rfind("railodd: ", 0) == 0) {
+            last_railodd = line;
+        }
+    }
+    std::string e = last_railodd.empty() ? last : last_railodd;
+    return e.size() > 400 ? e.substr(0, 400) + "..." : e;
+}
+
+// posix_spawn: vfork semantics, so a large parent is not copied per route.
+pid_t spawn(const BatchStep& step, std::string& error) {
+    std::vector<std::string> args{"railodd"};
+    args.insert(args.end(), step.args.begin(), step.args.end());
+    std::vector<char*> argv;
+    for (auto& a : args) {
+        argv.push_back(a.data());
+    }
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, step.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+    posix_spawn_file_actions_addchdir_np(&fa, step.cwd.c_str());
+    pid_t pid = -1;
+    const int rc = ::posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    if (rc != 0) {
+        error = "cannot start railodd " + step.name + ": " + std::strerror(rc);
+        return -1;
+    }
+    return pid;
+}
+
+struct Running {
+    std::size_t task = 0;
+    std::size_t step = 0;
+    pid_t pid = -1;
+    Clock::time_point start;
+    TaskOutcome outcome;
+};
+
+// Starts the running task's current step; false (outcome filled) if it could not.
+bool start_step(const std::vector<BatchTask>& tasks, Running& r) {
+    std::string error;
+    r.pid = spawn(tasks[r.task].steps[r.step], error);
+    if (r.pid < 0) {
+        r.outcome.exit_code = exit_internal;
+        r.outcome.failed_step = tasks[r.task].steps[r.step].name;
+        r.outcome.error = error;
+        return false;
+    }
+    return true;
+}
+
+// Records the exit of r's current step; true when the task is finished.
+bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, const rusage& ru) {
+    TaskOutcome& o = r.outcome;
+    o.peak_rss_kb = std::max(o.peak_rss_kb, static_cast<long>(ru.ru_maxrss));
+    const BatchStep& step = tasks[r.task].steps[r.step];
+    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (!ok) {
+        o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        o.failed_step = step.name;
+        o.error = WIFSIGNALED(status) ? std::string{"killed by signal "} + std::to_string(WTERMSIG(status))
+                                      : error_line(step.log);
+        return true;
+    }
+    if (++r.step < tasks[r.task].steps.size()) {
+        return !start_step(tasks, r);
+    }
+    o.ok = true;
+    return true;
+}
+
+} // namespace
+
+void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
+               const std::function<void(std::size_t, const TaskOutcome&)>& on_done) {
+    std::vector<Running> running;
+    std::size_t next = 0;
+    auto finish = [&](Running& r) {
+        r.outcome.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
+        on_done(r.task, r.outcome);
+    };
+    while (next < tasks.size() || !running.empty()) {
+        while (running.size() < jobs && next < tasks.size()) {
+            Running r{next++, 0, -1, Clock::now(), {}};
+            if (start_step(tasks, r)) {
+                running.push_back(std::move(r));
+            } else {
+                finish(r);
+            }
+        }
+        std::vector<std::pair<std::string, std::string>> shown;
+        for (const auto& r : running) {
+            shown.emplace_back(tasks[r.task].id, tasks[r.task].steps[r.step].name);
+        }
+        progress.running(shown);
+        int status = 0;
+        rusage ru{};
+        const pid_t pid = ::wait4(-1, &status, WNOHANG, &ru);
+        if (pid == 0 || (pid < 0 && errno == EINTR)) {
+            // Polling keeps the ETA line moving; 0.2 s is nothing beside a route.
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            continue;
+        }
+        if (pid < 0) {
+            throw std::runtime_error(std::string{"batch: wait4: "} + std::strerror(errno));
+        }
+        for (auto it = running.begin(); it != running.end(); ++it) {
+            if (it->pid == pid) {
+                if (step_exited(tasks, *it, status, ru)) {
+                    finish(*it);
+                    running.erase(it);
+                }
+                break;
+            }
+        }
+    }
+}
+
+} // namespace railodd::cli
