@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -87,6 +88,28 @@ std::string resolved(const pugi::xml_document& doc, const std::string& value) {
         }
     }
     return value;
+}
+
+// The street vehicle starts 10 m along the crossing road from the crossing,
+// facing it: the road's line (road_line_deg) is consistent with the crossing
+// angle, and the start lies on that line in road coordinates.
+void street_vehicle_on_the_road(const fs::path& xosc, const json& anchor, const json& profile) {
+    const json* crossing = nullptr;
+    for (const auto& e : profile["elements"]) {
+        if (e["odd_element"] == anchor["element"] && e["osm_ids"] == anchor["osm_ids"]) {
+            crossing = &e;
+        }
+    }
+    ASSERT_NE(crossing, nullptr);
+    const double line = (*crossing)["attributes"]["road_line_deg"], angle = (*crossing)["attributes"]["angle"];
+    EXPECT_NEAR(std::min(line, 180.0 - line), angle, 1e-9);
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_file(xosc.c_str()));
+    const auto start = doc.select_node("//Private[@entityRef='StreetVehicle']//LanePosition").node();
+    const double theta = line * M_PI / 180.0;
+    EXPECT_NEAR(start.attribute("s").as_double(), anchor["s"].get<double>() - 10.0 * std::cos(theta), 1e-5);
+    EXPECT_NEAR(start.attribute("offset").as_double(), -10.0 * std::sin(theta), 1e-5);
+    EXPECT_NEAR(start.child("Orientation").attribute("h").as_double(), theta, 1e-5);
 }
 
 } // namespace
@@ -176,6 +199,7 @@ TEST_F(ScenarioSampleRoute, AnchorsSatisfyTheirTemplates) {
             EXPECT_GE(gap, 0.0);
             EXPECT_LE(gap, 500.0);
             EXPECT_NE(s["text"].get<std::string>().find("radius "), std::string::npos);
+            street_vehicle_on_the_road(out / s["file"].get<std::string>(), a, profile);
             EXPECT_EQ(s["assets"]["Ego"].is_string(), true);
         } else if (t == "tunnel_exit_animal") {
             EXPECT_EQ(a["element"], "Scenery/Structures/Tunnel");

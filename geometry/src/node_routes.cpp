@@ -87,4 +87,13 @@ double line_angle_deg(ingest::XY u, ingest::XY v) {
     return std::atan2(cross, std::abs(dot(u, v))) * 180.0 / std::numbers::pi;
 }
 
+double line_direction_deg(ingest::XY u, ingest::XY v) {
+    if (std::hypot(u.x, u.y) == 0.0 || std::hypot(v.x, v.y) == 0.0) {
+        return 90.0;
+    }
+    double deg = std::atan2(u.x * v.y - u.y * v.x, dot(u, v)) * 180.0 / std::numbers::pi;
+    deg = std::fmod(deg + 360.0, 180.0);
+    return deg >= 180.0 ? 0.0 : deg;
+}
+
 } // namespace railodd::geometry::detail

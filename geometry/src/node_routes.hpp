@@ -48,4 +48,8 @@ ingest::XY unit(ingest::XY from, ingest::XY to);
 // Acute angle between two lines given by direction vectors: degrees, [0, 90].
 double line_angle_deg(ingest::XY u, ingest::XY v);
 
+// The line through v measured counterclockwise from the direction u, in
+// degrees in [0, 180) (a line has no direction, so 180 is 0).
+double line_direction_deg(ingest::XY u, ingest::XY v);
+
 } // namespace railodd::geometry::detail

@@ -128,7 +128,9 @@ void crossings_at_node(const CrossingContext& ctx, const std::vector<ingest::Way
         c.s = track.s;
         c.shared_node = node;
         c.level_crossing_node = tagged;
-        c.angle_deg = line_angle_deg({track.fwd.dir.x - track.back.dir.x, track.fwd.dir.y - track.back.dir.y}, road_dir);
+        const ingest::XY track_dir{track.fwd.dir.x - track.back.dir.x, track.fwd.dir.y - track.back.dir.y};
+        c.angle_deg = line_angle_deg(track_dir, road_dir);
+        c.road_line_deg = line_direction_deg(track_dir, road_dir);
         c.grade_separated = grade_separated(track.level, road_level);
         out.push_back(c);
     }

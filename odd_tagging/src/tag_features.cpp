@@ -108,6 +108,7 @@ void tag_crossings(TagContext& ctx) {
             const Attribute* rc = ctx.taxonomy().attribute(*el, "road_class");
             a.push_back({"road_class", rc && rc->has_value(highway) ? highway : std::string{"other"}});
             a.push_back({"angle", c.angle_deg});
+            a.push_back({"road_line_deg", c.road_line_deg}); // for placing road users on the road (scenarios)
         }
         ctx.tag(footpath ? "Scenery/Crossings/Footpath crossing" : "Scenery/Crossings/Level crossing", c.edge, s, s, a, ids,
                 "osm+derived");

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <optional>
 
 namespace railodd::scenario {
 
@@ -101,13 +103,40 @@ std::vector<CoveredValue> cover_map(const TemplateContext& ctx, const Anchor& a,
     return out;
 }
 
+// A road user at a level crossing stands on the road: the profile gives the
+// road's line across the track (road_line_deg, counterclockwise from the
+// road's s direction), so a point `d` metres along the road from the crossing
+// lies at s - d cos(theta) and offset -d sin(theta) on the right side, facing
+// the crossing. The road is taken as straight over those metres.
+std::optional<LanePlacement> on_crossing_road(const TemplateContext& ctx, const Anchor& a, const LanePlacement& at,
+                                              double side) {
+    const auto* v = ctx.profile.elements[a.element].find("road_line_deg");
+    if (!v || !std::holds_alternative<double>(*v)) {
+        return std::nullopt;
+    }
+    const double theta = std::get<double>(*v) * std::numbers::pi / 180.0;
+    LanePlacement p = at;
+    p.reversed = false;
+    p.s = at.s + side * crossing_approach_m * std::cos(theta);
+    p.offset = side * crossing_approach_m * std::sin(theta);
+    p.heading = side < 0.0 ? theta : theta + std::numbers::pi;
+    return p;
+}
+
 Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asset& asset, const Anchor& a, double side) {
     Actor actor = actor_from(asset, t.name);
     const auto at = ctx.lines.at(a.line, std::clamp(a.chainage + t.along_m, a.start_chainage, a.end_chainage));
     actor.start = at.value_or(a.place);
     actor.start.offset = lateral_offset(t.place, side);
+    const LanePlacement on_track = actor.start;
+    const auto road = t.place == Lateral::crossing_approach ? on_crossing_road(ctx, a, on_track, side) : std::nullopt;
+    if (road) {
+        actor.start = *road;
+    }
     if (t.move_to) {
+        // Along the road onto the crossing keeps the road user's heading.
         LanePlacement target = actor.start;
+        target.s = on_track.s;
         target.offset = lateral_offset(*t.move_to, side);
         actor.target = target;
         actor.target_speed_mps = t.move_speed_kmh / 3.6;

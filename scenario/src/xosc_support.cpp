@@ -119,7 +119,7 @@ void lane_position(pugi::xml_node parent, const LanePlacement& p) {
     // decides which way the actor faces.
     pugi::xml_node o = lp.append_child("Orientation");
     attr(o, "type", "relative");
-    attr(o, "h", p.reversed ? std::numbers::pi : 0.0);
+    attr(o, "h", std::remainder((p.reversed ? std::numbers::pi : 0.0) + p.heading, 2.0 * std::numbers::pi));
 }
 
 void position(pugi::xml_node parent, const LanePlacement& p) { lane_position(parent.append_child("Position"), p); }

@@ -23,6 +23,9 @@ struct RoadRailCrossing {
     std::int64_t shared_node = 0;         // 0: found geometrically
     std::int64_t level_crossing_node = 0; // railway=level_crossing|crossing node at that point, 0 if none
     double angle_deg = 0.0;               // between road and track, [0, 90]
+    // The road's line counterclockwise from the edge's direction, [0, 180):
+    // which way the road runs across the track (scenarios put road users on it).
+    double road_line_deg = 90.0;
     bool grade_separated = false;
 };
 

@@ -19,6 +19,7 @@ struct LanePlacement {
     double s = 0.0;
     double offset = 0.0;
     bool reversed = false;
+    double heading = 0.0; // rad, added to the lane's direction (and to pi when reversed)
 };
 
 struct Dimensions {
