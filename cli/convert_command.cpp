@@ -56,7 +56,7 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--station-distance", opt_.station_distance_m, "Keep stations and halts within this many metres")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
-    app->add_option("--threads", opt_.threads, "Threads decoding PBF (default: libosmium's choice)");
+    app->add_option("--threads", opt_.threads, "Threads decoding PBF and fitting tracks (default: one per hardware thread; outputs do not depend on it)");
     app->add_flag("--estimate-cant", opt_.estimate_cant,
                   "Estimate equilibrium cant from maxspeed and radius where railway:cant is not mapped (max 160 mm)");
     app->add_option("--odr-version", opt_.odr_version, "OpenDRIVE revision of map.xodr: 1.6, 1.7 or 1.8")
@@ -181,13 +181,14 @@ std::string input_date(const std::string& input) {
 }
 
 Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files, double node_noise_m,
-                      PhaseTimer& timer) {
+                      unsigned threads, PhaseTimer& timer) {
     Geometry g;
     timer.start("track_graph");
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
     timer.start("fit_tracks");
     geometry::FitOptions fo;
     fo.noise_sigma_m = node_noise_m;
+    fo.threads = threads;
     g.fitted_tracks = geometry::fit_track_graph(g.tracks, fo);
     timer.start("vertical_profiles");
     std::optional<geometry::ElevationModel> dem;
@@ -237,7 +238,7 @@ int ConvertCommand::run() {
     // Phase 2: track graph, railway-grade centrelines and profiles, road
     // centrelines; then crossings, and features placed on the tracks.
     PhaseTimer timer;
-    Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, timer);
+    Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, opt_.threads, timer);
     timer.start("cant");
     geometry::CantOptions cant;
     cant.estimate = opt_.estimate_cant;

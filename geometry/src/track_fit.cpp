@@ -7,9 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
 #include <map>
+#include <mutex>
 #include <numbers>
 #include <optional>
+#include <set>
+#include <thread>
 
 namespace railodd::geometry {
 
@@ -64,6 +69,12 @@ class NetworkFitter {
 public:
     NetworkFitter(const TrackGraph& g, const FitOptions& o) : g_(g), o_(o), chains_(build_chains(g)) {
         fitted_.resize(chains_.size());
+        planned_.assign(chains_.size(), 0);
+        in_progress_.assign(chains_.size(), 0);
+        depends_.resize(chains_.size());
+        corner_chain_.assign(chains_.size(), 0);
+        chain_degenerate_.assign(chains_.size(), 0);
+        chain_spliced_.assign(chains_.size(), 0);
         geometry_.reserve(chains_.size());
         for (std::size_t c = 0; c < chains_.size(); ++c) {
             geometry_.push_back(chain_points(g_, chains_[c]));
@@ -85,33 +96,138 @@ public:
             len[c] = chain_length(geometry_[c]);
         }
         std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return len[a] > len[b]; });
+        // Which end is tied to which chain depends on the graph only: decide
+        // all ties first, then fit in parallel, each chain once the chains it
+        // is tied to are done. Results do not depend on the thread count.
         for (std::size_t c : order) {
-            fit_chain(c);
+            plan_chain(c);
+        }
+        execute();
+        for (std::size_t c : completion_) {
+            if (corner_chain_[c]) {
+                fallback_.push_back(c);
+            }
+            spliced_ += chain_spliced_[c];
+            degenerate_ += chain_degenerate_[c];
         }
         tie_cycles();
         return collect();
     }
 
 private:
-    // The pose a branch end at vertex v must take: the through chain's pose
-    // there, turned round when the branch leaves the other way.
-    std::optional<Pose> tie(std::size_t c, std::size_t v, bool at_start, ChainEnd& end) {
+    // Decides whether the end of chain c at vertex v is tied to the chain
+    // passing through v, planning that chain first (depth first, as the
+    // sequential fit did) unless it is waiting on c: a cycle of branches,
+    // left free for now (see tie_cycles()).
+    void plan_tie(std::size_t c, std::size_t v, bool at_start, ChainEnd& end) {
         const auto it = through_.find(v);
         if (it == through_.end() || it->second == c) {
-            return std::nullopt;
+            return;
         }
         const std::size_t t = it->second;
-        if (!fitted_[t].done) {
+        if (!planned_[t]) {
             if (in_progress_[t]) {
                 ++untied_;
                 cycle_ends_.push_back({c, v, at_start});
-                return std::nullopt; // a cycle of branches: free for now, see tie_cycles()
+                return;
             }
-            fit_chain(t);
+            plan_chain(t);
         }
         end.tied = true;
         end.to_chain = t;
-        return branch_pose(c, v, at_start, t);
+        depends_[c].push_back(t);
+    }
+
+    void plan_chain(std::size_t c) {
+        if (planned_[c] || in_progress_[c]) {
+            return;
+        }
+        in_progress_[c] = true;
+        Chain& ch = chains_[c];
+        plan_tie(c, ch.start.vertex, true, ch.start);
+        plan_tie(c, ch.end.vertex, false, ch.end);
+        planned_[c] = true;
+        in_progress_[c] = false;
+        completion_.push_back(c);
+    }
+
+    std::optional<Pose> tie_pose(std::size_t c, const ChainEnd& end, bool at_start) const {
+        if (!end.tied) {
+            return std::nullopt;
+        }
+        return branch_pose(c, end.vertex, at_start, end.to_chain);
+    }
+
+    // Runs fit_chain over all chains on the worker threads, a chain as soon
+    // as the chains its ends are tied to are fitted; ready chains go in the
+    // planned order.
+    void execute() {
+        const std::size_t n = chains_.size();
+        unsigned threads = o_.threads > 0 ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
+        threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, n)));
+        if (threads <= 1) {
+            for (std::size_t c : completion_) {
+                fit_chain(c);
+            }
+            return;
+        }
+        std::vector<std::size_t> rank(n), pending(n, 0);
+        std::vector<std::vector<std::size_t>> dependents(n);
+        for (std::size_t i = 0; i < completion_.size(); ++i) {
+            rank[completion_[i]] = i;
+        }
+        std::set<std::pair<std::size_t, std::size_t>> ready; // (rank, chain)
+        for (std::size_t c = 0; c < n; ++c) {
+            for (std::size_t t : depends_[c]) {
+                dependents[t].push_back(c);
+                ++pending[c];
+            }
+            if (pending[c] == 0) {
+                ready.insert({rank[c], c});
+            }
+        }
+        std::mutex m;
+        std::condition_variable cv;
+        std::size_t finished = 0;
+        std::exception_ptr error;
+        auto worker = [&] {
+            std::unique_lock lock(m);
+            while (true) {
+                cv.wait(lock, [&] { return !ready.empty() || finished == n || error; });
+                if (finished == n || error) {
+                    return;
+                }
+                const std::size_t c = ready.begin()->second;
+                ready.erase(ready.begin());
+                lock.unlock();
+                try {
+                    fit_chain(c);
+                } catch (...) {
+                    lock.lock();
+                    error = std::current_exception();
+                    cv.notify_all();
+                    return;
+                }
+                lock.lock();
+                ++finished;
+                for (std::size_t d : dependents[c]) {
+                    if (--pending[d] == 0) {
+                        ready.insert({rank[d], d});
+                    }
+                }
+                cv.notify_all();
+            }
+        };
+        std::vector<std::thread> pool;
+        for (unsigned i = 0; i < threads; ++i) {
+            pool.emplace_back(worker);
+        }
+        for (auto& t : pool) {
+            t.join();
+        }
+        if (error) {
+            std::rethrow_exception(error);
+        }
     }
 
     // The through chain t's pose at v, turned round when the branch c leaves
@@ -172,14 +288,12 @@ private:
         }
     }
 
+    // Fits chain c; only reads the chains it is tied to and writes its own
+    // slots, so chains run in parallel.
     void fit_chain(std::size_t c) {
-        if (fitted_[c].done || in_progress_[c]) {
-            return;
-        }
-        in_progress_[c] = true;
-        Chain& ch = chains_[c];
-        const std::optional<Pose> start = tie(c, ch.start.vertex, true, ch.start);
-        const std::optional<Pose> end = tie(c, ch.end.vertex, false, ch.end);
+        const Chain& ch = chains_[c];
+        const std::optional<Pose> start = tie_pose(c, ch.start, true);
+        const std::optional<Pose> end = tie_pose(c, ch.end, false);
         const ChainGeometry& cg = geometry_[c];
         Alignment a;
         if (distinct_points(cg.points) < 2) {
@@ -187,13 +301,11 @@ private:
             // keeps the edge, its ids and its links in the output.
             a.start = start.value_or(Pose{cg.points.front().x, cg.points.front().y, 0.0, 0.0});
             a.primitives.push_back(make_line(0.0));
-            ++degenerate_;
+            chain_degenerate_[c] = 1;
         } else {
             ChainFit fit = fit_chain_points(cg.points, start, end, o_);
-            if (fit.method == ChainMethod::corners) {
-                fallback_.push_back(c);
-            }
-            spliced_ += fit.spliced_ends;
+            corner_chain_[c] = fit.method == ChainMethod::corners ? 1 : 0;
+            chain_spliced_[c] = fit.spliced_ends;
             a = std::move(fit.alignment);
         }
         FittedChain& f = fitted_[c];
@@ -218,7 +330,6 @@ private:
         }
         f.alignment = std::move(a);
         f.done = true;
-        in_progress_[c] = false;
     }
 
     FittedNetwork collect() {
@@ -274,7 +385,15 @@ private:
     std::vector<ChainGeometry> geometry_;
     std::vector<FittedChain> fitted_;
     std::map<std::size_t, std::size_t> through_; // interior joint vertex -> chain passing through
-    std::map<std::size_t, bool> in_progress_;
+    // Planning: ties decided, and the order the sequential fit finished chains in.
+    std::vector<char> planned_;
+    std::vector<char> in_progress_;
+    std::vector<std::vector<std::size_t>> depends_; // chains each chain's ties read
+    std::vector<std::size_t> completion_;
+    // Per chain, written by the thread fitting it.
+    std::vector<char> corner_chain_;
+    std::vector<char> chain_degenerate_;
+    std::vector<std::size_t> chain_spliced_;
     std::size_t untied_ = 0;
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;

@@ -183,25 +183,35 @@ struct WindowFit {
 
 std::size_t free_parameters(const CurvatureModel& m) { return fit::ParameterMap(m).size(); }
 
-// Is the structured fit (few parameters) as good as the fine spline (many)?
-// An F-test on the residual sums of squares: the extra parameters of the
-// spline must buy a significant improvement, or the simpler model wins. The
-// largest deviation may not grow by more than two noise sigmas either.
+// The largest residual sum of squares a structured fit with ps free
+// parameters may have and still count as good as the fine spline (pf
+// parameters, residual sum rss_f over n points): an F-test, the extra
+// parameters of the spline must buy a significant improvement or the simpler
+// model wins.
+double acceptable_rss(double rss_f, std::size_t ps, std::size_t pf, std::size_t n, double sigma) {
+    if (pf <= ps || n <= pf) {
+        return rss_f * 1.1 + 1e-12;
+    }
+    // The spline's residuals never fall below the mapping noise by much; the
+    // floor keeps an overfitting spline from rejecting the right structure.
+    const double noise_var = std::max(rss_f / static_cast<double>(n), 0.8 * sigma * sigma);
+    return rss_f + 2.0 * static_cast<double>(pf - ps) * noise_var;
+}
+
+// Is the structured fit as good as the fine spline? Its residual sum within
+// acceptable_rss, and its largest deviation no more than two noise sigmas
+// beyond the spline's.
 bool as_good(const fit::SolveReport& s, std::size_t ps, const fit::SolveReport& f, std::size_t pf, std::size_t n,
              double sigma) {
-    if (s.max_m > f.max_m + 2 * sigma) {
+    if (s.gave_up || s.max_m > f.max_m + 2 * sigma) {
         return false;
     }
     const double rss_s = s.rms_m * s.rms_m * static_cast<double>(n);
     const double rss_f = f.rms_m * f.rms_m * static_cast<double>(n);
     if (pf <= ps || n <= pf) {
-        return rss_s <= rss_f * 1.1 + 1e-12;
+        return rss_s <= acceptable_rss(rss_f, ps, pf, n, sigma);
     }
-    // The spline's residuals never fall below the mapping noise by much; the
-    // floor keeps an overfitting spline from rejecting the right structure.
-    const double noise_var = std::max(rss_f / static_cast<double>(n), 0.8 * sigma * sigma);
-    const double f_stat = ((rss_s - rss_f) / static_cast<double>(pf - ps)) / noise_var;
-    return f_stat < 2.0;
+    return rss_s < acceptable_rss(rss_f, ps, pf, n, sigma);
 }
 
 // Candidate structures read off the curvature diagram at several noise
@@ -252,8 +262,11 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     const std::size_t pf = free_parameters(fine);
     for (auto& pieces : candidate_structures(ks, kk)) {
         CurvatureModel m = fit::build_structure(std::move(pieces), se);
+        const std::size_t ps = free_parameters(m);
+        const double rss_f = fine_report.rms_m * fine_report.rms_m * static_cast<double>(p.size());
+        so.give_up_rss = acceptable_rss(rss_f, ps, pf, p.size(), o.noise_sigma_m);
         const fit::SolveReport r = fit::solve(m, p, so);
-        if (as_good(r, free_parameters(m), fine_report, pf, p.size(), o.noise_sigma_m)) {
+        if (as_good(r, ps, fine_report, pf, p.size(), o.noise_sigma_m)) {
             return {std::move(m), r, false};
         }
     }

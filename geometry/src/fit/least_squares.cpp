@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace railodd::geometry::fit {
 
@@ -306,12 +307,25 @@ std::vector<double> point_distances(const CurvatureModel& model, const std::vect
 
 namespace {
 
+// Is a fit still this far above the cost it must reach, and converging this
+// slowly, beyond hope? Levenberg-Marquardt's gains shrink as it converges: at
+// the current rate, with twice the slack, the remaining iterations cannot get
+// there. Structure candidates that cannot match the fine spline stop here
+// after a few iterations instead of forty.
+bool hopeless(double cost, double gain, int remaining, double target) {
+    if (!std::isfinite(target) || cost <= 2.0 * target) {
+        return false;
+    }
+    return cost * std::pow(1.0 - std::min(1.0, 2.0 * gain), remaining) > target;
+}
+
 SolveReport solve_once(CurvatureModel& model, const std::vector<Point2>& points, const SolveOptions& options) {
     const ParameterMap map(model);
     const Problem p{points, options};
     SolveReport report;
     std::vector<Foot> feet = feet_of(model, model.knot_poses(), points, options);
     double mu = 1e-3;
+    const double give_up_cost = options.give_up_rss / (options.sigma_m * options.sigma_m);
     for (int it = 0; it < options.max_iterations && map.size() > 0; ++it) {
         report.iterations = it + 1;
         const Linearisation lin = linearise(model, map, p, feet);
@@ -338,6 +352,9 @@ SolveReport solve_once(CurvatureModel& model, const std::vector<Point2>& points,
                 improved = true;
                 if (gain < 1e-7) {
                     it = options.max_iterations; // converged
+                } else if (hopeless(c, gain, options.max_iterations - it - 1, give_up_cost)) {
+                    report.gave_up = true;
+                    it = options.max_iterations;
                 }
             } else {
                 mu *= 4;
@@ -359,9 +376,24 @@ SolveReport solve(CurvatureModel& model, const std::vector<Point2>& points, cons
         // fit the data first, then pull the end into place.
         SolveOptions free_end = options;
         free_end.end.reset();
-        report.iterations = solve_once(model, points, free_end).iterations;
+        const SolveReport first = solve_once(model, points, free_end);
+        report.iterations = first.iterations;
+        report.gave_up = first.gave_up;
     }
-    report.iterations += solve_once(model, points, options).iterations;
+    if (!report.gave_up) {
+        // The end rows weigh in the cost here: only the free fit may give up.
+        SolveOptions with_end = options;
+        if (options.end) {
+            with_end.give_up_rss = std::numeric_limits<double>::infinity();
+        }
+        const SolveReport second = solve_once(model, points, with_end);
+        report.iterations += second.iterations;
+        report.gave_up = second.gave_up;
+    }
+    if (report.gave_up) {
+        report.rms_m = report.max_m = std::numeric_limits<double>::infinity();
+        return report;
+    }
     const std::vector<double> d = point_distances(model, points);
     double sum = 0.0;
     for (double x : d) {

@@ -4,6 +4,7 @@
 // optional end pose the curve must reach.
 #include "curvature_model.hpp"
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -23,12 +24,16 @@ struct SolveOptions {
     bool pin_first = true;          // the first point marks the curve's start (along-track residual too)
     bool pin_last = true;           // the last point marks its end
     std::optional<Pose> end;        // end pose (x, y, hdg, curvature) to reach
+    // Sum of squared distances (m^2) above which the caller rejects the fit
+    // anyway: the solve stops once its progress cannot bring it below.
+    double give_up_rss = std::numeric_limits<double>::infinity();
 };
 
 struct SolveReport {
     double rms_m = 0.0;
     double max_m = 0.0;
     int iterations = 0;
+    bool gave_up = false; // stopped early: the fit could not reach give_up_rss
 };
 
 // Distances of every point to the model's curve (after the last update).

@@ -22,6 +22,7 @@ struct FitOptions {
     double curvature_sigma = 2e-5; // 1/m: noise scale of the estimated curvature diagram
     double kink_sigma = 5e-4;      // 1/m: allowed change of curvature slope between knots of the fine spline
     double ridge_sigma = 2e-3;     // 1/m: weak pull of the fine spline towards zero curvature
+    unsigned threads = 0;          // chains fitted at once by fit_track_graph; 0: one per hardware thread
 };
 
 struct FitQuality {
