@@ -20,7 +20,7 @@ struct Point {
 };
 
 // Composite Simpson in long double over the quadratic heading: an integration
-// path independent of the Gauss-Legendre code under test.
+// path independent of the power series under test.
 Point reference_spiral(const Pose& start, double k0, double k1, double length) {
     const int n = 400000;
     const long double h = static_cast<long double>(length) / n;
@@ -129,6 +129,31 @@ TEST(Primitive, LongClothoidsMatchFineReferenceWithinMicrometre) {
             << "k " << c.k0 << " -> " << c.k1 << " over " << c.len;
         EXPECT_NEAR(end.hdg, start.hdg + 0.5 * (c.k0 + c.k1) * c.len, 1e-13);
         EXPECT_NEAR(end.curvature, c.k1, 1e-15);
+    }
+}
+
+// The pieces the fit evaluates millions of times: a few metres to a few tens,
+// any curvature sign, and sub-intervals whose phase is at the series' limit.
+TEST(Primitive, ShortClothoidsMatchFineReferenceWithinNanometre) {
+    struct Case {
+        double k0;
+        double k1;
+        double len;
+    };
+    const Case cases[] = {{1.0 / 300.0, 1.0 / 250.0, 12.0}, {-1.0 / 5000.0, 1.0 / 4000.0, 25.0},
+                          {0.0, 1e-7, 40.0},                {1.0 / 190.0, -1.0 / 190.0, 60.0},
+                          {0.2, 0.25, 1.2},                 {0.0, 0.1, 6.0},
+                          {0.04, 0.0, 7.5},                 {-0.1, -0.05, 9.0}};
+    const Pose start{-350.0, 80.0, -1.2, 0.0};
+    for (const Case& c : cases) {
+        const Primitive p = make_spiral(c.len, c.k0, c.k1);
+        for (double f : {0.3, 1.0}) {
+            const Pose end = evaluate(start, p, f * c.len);
+            const double rate = (c.k1 - c.k0) / c.len;
+            const Point ref = reference_spiral(start, c.k0, c.k0 + rate * f * c.len, f * c.len);
+            EXPECT_LT(std::hypot(end.x - ref.x, end.y - ref.y), 1e-9)
+                << "k " << c.k0 << " -> " << c.k1 << " over " << c.len << " at " << f;
+        }
     }
 }
 
