@@ -51,8 +51,8 @@ double length(const Alignment& alignment);
 
 // Pose at distance ds along one primitive from `start`; ds is clamped to
 // [0, primitive.length]. Lines and arcs are exact; spirals integrate the
-// quadratic heading with composite 8-point Gauss-Legendre (error far below
-// 1e-9 m per kilometre).
+// quadratic heading by its power series on sub-intervals of at most 0.3 rad
+// of turn (error below 1e-9 m on the pieces the fit uses, 1e-6 m per km).
 Pose evaluate(const Pose& start, const Primitive& primitive, double ds);
 
 // Pose at arc length s, clamped to [0, length(alignment)]. At a joint between
