@@ -3,6 +3,8 @@
 
 #include "tie_splice.hpp"
 
+#include <limits>
+
 namespace railodd::geometry {
 
 namespace {
@@ -46,11 +48,11 @@ ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& sta
 ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>& start,
                           const std::optional<Pose>& end, const FitOptions& o) {
     const FitResult r = fit_alignment(p, start, end, o);
-    double worst = r.quality.max_m;
+    double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.max_m;
     ChainFit best{r.alignment, ChainMethod::railway, 0};
     if ((start || end) && worst > retry_deviation_m) {
         ChainFit s = spliced_fit(p, start, end, o);
-        const double m = measure_fit(s.alignment, p).max_m;
+        const double m = loops_back(s.alignment, p) ? std::numeric_limits<double>::infinity() : measure_fit(s.alignment, p).max_m;
         if (m < worst) {
             best = std::move(s);
             worst = m;

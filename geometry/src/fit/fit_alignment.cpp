@@ -260,12 +260,19 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     }
     // Candidates come simplest first: the first as good as the fine spline wins.
     const std::size_t pf = free_parameters(fine);
+    std::vector<Point> window_points;
+    for (const Point2& q : p) {
+        window_points.push_back({q.x, q.y});
+    }
     for (auto& pieces : candidate_structures(ks, kk)) {
         CurvatureModel m = fit::build_structure(std::move(pieces), se);
         const std::size_t ps = free_parameters(m);
         const double rss_f = fine_report.rms_m * fine_report.rms_m * static_cast<double>(p.size());
         so.give_up_rss = acceptable_rss(rss_f, ps, pf, p.size(), o.noise_sigma_m);
         const fit::SolveReport r = fit::solve(m, p, so);
+        if (loops_back(m.to_alignment(), window_points)) {
+            continue;
+        }
         if (as_good(r, ps, fine_report, pf, p.size(), o.noise_sigma_m)) {
             return {std::move(m), r, false};
         }

@@ -281,11 +281,24 @@ double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector
     return r.squaredNorm();
 }
 
-void clamp_model(CurvatureModel& m, double min_length) {
+double total_length(const CurvatureModel& m) {
+    double sum = 0.0;
+    for (double l : m.lengths) {
+        sum += l;
+    }
+    return sum;
+}
+
+// Keeps a trial model in the range the data can support: curvature at most
+// 0.1 1/m, every free length between min_length and max_length. Without the
+// upper bound a diverging step could make a segment kilometres long and
+// tightly curved, whose evaluation then takes minutes (seen on a replicated
+// Cologne extract).
+void clamp_model(CurvatureModel& m, double min_length, double max_length) {
     constexpr double max_curvature = 0.1;
     for (std::size_t j = 0; j < m.segments(); ++j) {
         if (m.length_free[j]) {
-            m.lengths[j] = std::max(m.lengths[j], min_length);
+            m.lengths[j] = std::clamp(m.lengths[j], min_length, std::max(min_length, max_length));
         }
     }
     for (double& k : m.curv) {
@@ -326,6 +339,12 @@ SolveReport solve_once(CurvatureModel& model, const std::vector<Point2>& points,
     std::vector<Foot> feet = feet_of(model, model.knot_poses(), points, options);
     double mu = 1e-3;
     const double give_up_cost = options.give_up_rss / (options.sigma_m * options.sigma_m);
+    // No segment, nor the whole curve, needs to be longer than twice the
+    // polyline through the data.
+    double max_length = 50.0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        max_length += 2.0 * std::hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+    }
     for (int it = 0; it < options.max_iterations && map.size() > 0; ++it) {
         report.iterations = it + 1;
         const Linearisation lin = linearise(model, map, p, feet);
@@ -346,14 +365,19 @@ SolveReport solve_once(CurvatureModel& model, const std::vector<Point2>& points,
                 v[i] += delta[static_cast<long>(i)];
             }
             map.set(trial, v);
-            clamp_model(trial, options.min_length_m);
+            clamp_model(trial, options.min_length_m, max_length);
             const double c = cost_at_feet(trial, p, feet);
             if (std::isfinite(c) && c < cost) {
                 const double gain = (cost - c) / std::max(cost, 1e-30);
                 model = std::move(trial);
                 mu = std::max(mu / 3, 1e-9);
                 improved = true;
-                if (gain < 1e-7) {
+                if (total_length(model) > max_length) {
+                    // Diverged: the curve has grown far longer than the data
+                    // (spiralling at the curvature bound). Nothing to keep.
+                    report.gave_up = true;
+                    it = options.max_iterations;
+                } else if (gain < 1e-7) {
                     it = options.max_iterations; // converged
                 } else if (hopeless(c, gain, options.max_iterations - it - 1, give_up_cost)) {
                     report.gave_up = true;

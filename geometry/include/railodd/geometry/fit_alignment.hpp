@@ -50,4 +50,10 @@ std::vector<double> distances(const Alignment& alignment, const std::vector<Poin
 // Distances of points to an alignment, summarised (used for residual reports).
 FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& points);
 
+// Does the alignment loop where the mapped polyline through `points` does
+// not? More than 5 % + 10 m longer than the polyline, or a full turn more.
+// Node distances cannot show it: a loop at the curvature bound keeps every
+// node near some part of the curve.
+bool loops_back(const Alignment& alignment, const std::vector<Point>& points);
+
 } // namespace railodd::geometry
