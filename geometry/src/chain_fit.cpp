@@ -65,9 +65,10 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
         return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0};
     }
     if (best.method == ChainMethod::railway && end && misses(end_miss(best.alignment, *end))) {
-        // The fit only aims at its end pose (a weighted target); where it
-        // misses by more than the link tolerances allow, the last stretch is
-        // rebuilt from the fit's pose there to the tied pose.
+        // The fit holds its end pose as a constraint, but a window whose
+        // every model failed to meet it (least-squares fallback) may still
+        // miss: then the last stretch is rebuilt from the fit's pose there
+        // to the tied pose.
         best.alignment = splice_end(best.alignment, p, *end, splice_length_m, corner_options);
         best.method = ChainMethod::spliced;
         best.spliced_ends = 1;

@@ -270,8 +270,8 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
         const double rss_f = fine_report.rms_m * fine_report.rms_m * static_cast<double>(p.size());
         so.give_up_rss = acceptable_rss(rss_f, ps, pf, p.size(), o.noise_sigma_m);
         const fit::SolveReport r = fit::solve(m, p, so);
-        if (loops_back(m.to_alignment(), window_points)) {
-            continue;
+        if (!r.end_met || loops_back(m.to_alignment(), window_points)) {
+            continue; // too few parameters to reach the tied end, or a loop
         }
         if (as_good(r, ps, fine_report, pf, p.size(), o.noise_sigma_m)) {
             return {std::move(m), r, false};

@@ -1,5 +1,7 @@
 #include "least_squares.hpp"
 
+#include "end_constraint.hpp"
+
 #include "railodd/geometry/indexed_alignment.hpp"
 
 #include <Eigen/Dense>
@@ -7,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace railodd::geometry::fit {
 
@@ -123,7 +126,8 @@ struct Problem {
 };
 
 // Residual rows: normal distance of every point, the along-track distance of
-// the first and last point, curvature kinks, end pose.
+// the first and last point, curvature kinks. The end pose is a constraint
+// (end_constraint.hpp), or weighted rows appended where it cannot be one.
 std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     std::size_t rows = p.pts.size() + (p.opt.pin_first ? 1 : 0) + (p.opt.pin_last ? 1 : 0);
     if (p.opt.kink_sigma > 0 && m.knot_var.size() > 2) {
@@ -132,14 +136,15 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     if (p.opt.ridge_sigma > 0) {
         rows += m.knot_var.size();
     }
-    return rows + (p.opt.end ? 4 : 0);
+    return rows;
 }
 
-// Weight of the end-pose rows: the end is a link to another track, which must
-// be met to far below a millimetre.
+// Weight of the end-pose rows where the end cannot be an exact constraint:
+// the end is a link to another track, which must be met to far below a
+// millimetre.
 constexpr double end_weight = 1e5;
 
-void fill_residuals(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Foot>& feet,
+void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
                     const std::vector<Point2>& curve, const Problem& p, Eigen::VectorXd& r) {
     const double w = 1.0 / p.opt.sigma_m;
     std::size_t row = 0;
@@ -172,14 +177,6 @@ void fill_residuals(const CurvatureModel& m, const std::vector<Pose>& poses, con
             const double right = k < m.segments() ? m.lengths[k] : 0.0;
             r[row++] = huber(m.knot_curvature(k) * std::sqrt(0.5 * (left + right) / 20.0) / p.opt.ridge_sigma);
         }
-    }
-    if (p.opt.end) {
-        const Pose& e = poses.back();
-        const Pose& t = *p.opt.end;
-        r[row++] = end_weight * (e.x - t.x);
-        r[row++] = end_weight * (e.y - t.y);
-        r[row++] = end_weight * 100.0 * (e.hdg - t.hdg);
-        r[row++] = end_weight * 1e4 * (e.curvature - t.curvature);
     }
 }
 
@@ -229,8 +226,10 @@ double step_for(const ParameterMap& map, std::size_t i) {
 }
 
 struct Linearisation {
-    Eigen::MatrixXd J;
+    Eigen::MatrixXd J; // data rows
     Eigen::VectorXd r;
+    Eigen::MatrixXd C; // end gap rows, with an end pose
+    Eigen::VectorXd c;
 };
 
 Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, std::vector<Foot>& feet) {
@@ -241,9 +240,14 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
         curve[i] = {feet[i].cx, feet[i].cy};
     }
     const std::size_t rows = row_count(m, p);
-    Linearisation lin{Eigen::MatrixXd::Zero(static_cast<long>(rows), static_cast<long>(map.size())),
-                      Eigen::VectorXd::Zero(static_cast<long>(rows))};
-    fill_residuals(m, poses, feet, curve, p, lin.r);
+    Linearisation lin;
+    lin.J = Eigen::MatrixXd::Zero(static_cast<long>(rows), static_cast<long>(map.size()));
+    lin.r = Eigen::VectorXd::Zero(static_cast<long>(rows));
+    fill_residuals(m, feet, curve, p, lin.r);
+    if (p.opt.end) {
+        lin.c = end_gap(m, poses.back(), *p.opt.end);
+        lin.C = Eigen::MatrixXd::Zero(lin.c.size(), static_cast<long>(map.size()));
+    }
     const std::vector<double> base = map.get(m);
     std::vector<Point2> moved(feet.size());
     Eigen::VectorXd r2(static_cast<long>(rows));
@@ -254,20 +258,21 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
         v[i] += h;
         map.set(m2, v);
         const auto [a, b] = map.influence(i);
-        std::vector<Pose> p2 = poses;
         Pose end2;
         perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, moved, end2);
-        p2.back() = end2;
-        fill_residuals(m2, p2, feet, moved, p, r2);
+        fill_residuals(m2, feet, moved, p, r2);
         lin.J.col(static_cast<long>(i)) = (r2 - lin.r) / h;
+        if (p.opt.end) {
+            lin.C.col(static_cast<long>(i)) = (end_gap(m2, end2, *p.opt.end) - lin.c) / h;
+        }
     }
     return lin;
 }
 
 // Cost of a trial model with the feet (and their normals) of the current
 // linearisation held fixed, as in point-to-curve ICP; the next linearisation
-// moves the feet.
-double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet) {
+// moves the feet. With end_rows, the end pose's weighted rows count too.
+double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows) {
     const std::vector<Pose> poses = m.knot_poses();
     std::vector<Point2> curve(feet.size());
     for (std::size_t i = 0; i < feet.size(); ++i) {
@@ -277,8 +282,10 @@ double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector
         curve[i] = {c.x, c.y};
     }
     Eigen::VectorXd r(static_cast<long>(row_count(m, p)));
-    fill_residuals(m, poses, feet, curve, p, r);
-    return r.squaredNorm();
+    fill_residuals(m, feet, curve, p, r);
+    const double end_cost =
+        with_end_rows ? end_weight * end_weight * end_gap(m, poses.back(), *p.opt.end).squaredNorm() : 0.0;
+    return r.squaredNorm() + end_cost;
 }
 
 double total_length(const CurvatureModel& m) {
@@ -332,66 +339,179 @@ bool hopeless(double cost, double gain, int remaining, double target) {
     return cost * std::pow(1.0 - std::min(1.0, 2.0 * gain), remaining) > target;
 }
 
-SolveReport solve_once(CurvatureModel& model, const std::vector<Point2>& points, const SolveOptions& options) {
-    const ParameterMap map(model);
-    const Problem p{points, options};
-    SolveReport report;
-    std::vector<Foot> feet = feet_of(model, model.knot_poses(), points, options);
-    double mu = 1e-3;
-    const double give_up_cost = options.give_up_rss / (options.sigma_m * options.sigma_m);
-    // No segment, nor the whole curve, needs to be longer than twice the
-    // polyline through the data.
-    double max_length = 50.0;
-    for (std::size_t i = 1; i < points.size(); ++i) {
-        max_length += 2.0 * std::hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+// How the end pose is held: not at all, as exact constraints, or (where the
+// model cannot meet it exactly) as heavily weighted residual rows.
+enum class EndMode { none, exact, weighted };
+
+// One Levenberg-Marquardt solve's state: the model, the feet of the points,
+// the damping.
+class LevenbergMarquardt {
+public:
+    LevenbergMarquardt(CurvatureModel& model, const std::vector<Point2>& points, const SolveOptions& options)
+        : model_(model), map_(model), p_{points, options},
+          feet_(feet_of(model, model.knot_poses(), points, options)),
+          mode_(!options.end                          ? EndMode::none
+                : map_.size() >= end_rows(model) ? EndMode::exact
+                                                      : EndMode::weighted),
+          on_end_(!options.end) {
+        // No segment, nor the whole curve, needs to be longer than twice the
+        // polyline through the data.
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            max_length_ += 2.0 * std::hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+        }
     }
-    for (int it = 0; it < options.max_iterations && map.size() > 0; ++it) {
-        report.iterations = it + 1;
-        const Linearisation lin = linearise(model, map, p, feet);
+
+    SolveReport run() {
+        SolveReport report;
+        const double give_up_cost = p_.opt.give_up_rss / (p_.opt.sigma_m * p_.opt.sigma_m);
+        for (int it = 0; it < p_.opt.max_iterations && map_.size() > 0; ++it) {
+            report.iterations = it + 1;
+            const Outcome o = iterate();
+            if (o == Outcome::fell_back) {
+                continue;
+            }
+            if (o == Outcome::stuck) {
+                break;
+            }
+            if (total_length(model_) > max_length_) {
+                // Diverged: the curve has grown far longer than the data
+                // (spiralling at the curvature bound). Nothing to keep.
+                report.gave_up = true;
+                break;
+            }
+            if (o == Outcome::reached_end || o == Outcome::approaching_end) {
+                continue; // the gain of a step towards the end says nothing
+            }
+            if (gain_ < 1e-4) {
+                // Converged for every use made of the cost: on a window of
+                // 30 nodes a few thousandths of a noise variance, against
+                // the F-test's 1.6 per parameter.
+                break;
+            }
+            if (hopeless(cost_, gain_, p_.opt.max_iterations - it - 1, give_up_cost)) {
+                report.gave_up = true;
+                break;
+            }
+        }
+        return report;
+    }
+
+private:
+    enum class Outcome { improved, approaching_end, reached_end, stuck, fell_back };
+
+    // A trial model and the largest row of its end gap (0 without an end).
+    struct Trial {
+        CurvatureModel model;
+        double gap = 0.0;
+    };
+
+    // One linearisation and up to ten damped steps from it.
+    Outcome iterate() {
+        Linearisation lin = linearise(model_, map_, p_, feet_);
+        if (mode_ == EndMode::weighted) {
+            append_end_rows(lin);
+        }
         const double cost = lin.r.squaredNorm();
+        const double gap = mode_ == EndMode::exact ? lin.c.cwiseAbs().maxCoeff() : 0.0;
         // Only the lower triangle: LDLT reads no more, and it halves the
         // largest product of the solve.
         Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(lin.J.cols(), lin.J.cols());
         JtJ.selfadjointView<Eigen::Lower>().rankUpdate(lin.J.transpose());
         const Eigen::VectorXd g = lin.J.transpose() * lin.r;
-        bool improved = false;
-        for (int tries = 0; tries < 10 && !improved; ++tries) {
+        for (int tries = 0; tries < 10; ++tries) {
             Eigen::MatrixXd A = JtJ;
-            A.diagonal() += mu * (JtJ.diagonal().array() + 1e-12).matrix();
-            const Eigen::VectorXd delta = A.ldlt().solve(-g);
-            CurvatureModel trial = model;
-            std::vector<double> v = map.get(model);
-            for (std::size_t i = 0; i < v.size(); ++i) {
-                v[i] += delta[static_cast<long>(i)];
+            A.diagonal() += mu_ * (JtJ.diagonal().array() + 1e-12).matrix();
+            const Eigen::LDLT<Eigen::MatrixXd> ldlt(A);
+            // Away from the end pose, steps aim at a shrinking share of the
+            // gap until one closes part of it.
+            const double share = on_end_ ? 1.0 : std::pow(0.5, tries);
+            std::optional<Trial> t = mode_ == EndMode::exact ? exact_trial(ldlt, g, lin, share) : free_trial(ldlt, g);
+            if (!t) {
+                mode_ = EndMode::weighted; // this model cannot meet the end exactly
+                return Outcome::fell_back;
             }
-            map.set(trial, v);
-            clamp_model(trial, options.min_length_m, max_length);
-            const double c = cost_at_feet(trial, p, feet);
-            if (std::isfinite(c) && c < cost) {
-                const double gain = (cost - c) / std::max(cost, 1e-30);
-                model = std::move(trial);
-                mu = std::max(mu / 3, 1e-9);
-                improved = true;
-                if (total_length(model) > max_length) {
-                    // Diverged: the curve has grown far longer than the data
-                    // (spiralling at the curvature bound). Nothing to keep.
-                    report.gave_up = true;
-                    it = options.max_iterations;
-                } else if (gain < 1e-7) {
-                    it = options.max_iterations; // converged
-                } else if (hopeless(c, gain, options.max_iterations - it - 1, give_up_cost)) {
-                    report.gave_up = true;
-                    it = options.max_iterations;
-                }
-            } else {
-                mu *= 4;
+            if (!on_end_ && (t->gap < end_tolerance || t->gap < (1.0 - 0.25 * share) * gap)) {
+                // Nearer the end: the data cost does not count yet.
+                on_end_ = t->gap < end_tolerance;
+                const double c = cost_at_feet(t->model, p_, feet_, false);
+                accept(std::move(t->model), cost, c);
+                return on_end_ ? Outcome::reached_end : Outcome::approaching_end;
             }
+            const double c = cost_at_feet(t->model, p_, feet_, mode_ == EndMode::weighted);
+            if (on_end_ && t->gap < end_tolerance && std::isfinite(c) && c < cost) {
+                accept(std::move(t->model), cost, c);
+                return Outcome::improved;
+            }
+            mu_ *= 4;
         }
-        if (!improved) {
-            break;
+        if (!on_end_) {
+            mode_ = EndMode::weighted;
+            return Outcome::fell_back;
         }
+        return Outcome::stuck;
     }
-    return report;
+
+    void accept(CurvatureModel&& m, double before, double after) {
+        gain_ = (before - after) / std::max(before, 1e-30);
+        cost_ = after;
+        model_ = std::move(m);
+        mu_ = std::max(mu_ / 3, 1e-9);
+    }
+
+    std::optional<Trial> free_trial(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g) const {
+        Trial t{model_, 0.0};
+        apply(t.model, to_eigen(map_.get(model_)) + A.solve(-g));
+        return t;
+    }
+
+    // The constrained step (closing `share` of the end gap), then on towards
+    // the end pose.
+    std::optional<Trial> exact_trial(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
+                                     const Linearisation& lin, double share) const {
+        const std::optional<Eigen::VectorXd> d = constrained_step(A, g, lin.C, share * lin.c);
+        if (!d) {
+            return std::nullopt;
+        }
+        Trial t{model_, 0.0};
+        Eigen::VectorXd v = to_eigen(map_.get(model_)) + *d;
+        t.gap = project_onto_end(v, A, lin.C, [&](const Eigen::VectorXd& values) {
+            apply(t.model, values);
+            return end_gap(t.model, t.model.knot_poses().back(), *p_.opt.end);
+        });
+        return t;
+    }
+
+    void apply(CurvatureModel& m, const Eigen::VectorXd& values) const {
+        map_.set(m, std::vector<double>(values.data(), values.data() + values.size()));
+        clamp_model(m, p_.opt.min_length_m, max_length_);
+    }
+
+    static Eigen::VectorXd to_eigen(const std::vector<double>& v) {
+        return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<long>(v.size()));
+    }
+
+    void append_end_rows(Linearisation& lin) const {
+        const long n = lin.J.rows(), k = lin.C.rows();
+        lin.J.conservativeResize(n + k, Eigen::NoChange);
+        lin.J.bottomRows(k) = end_weight * lin.C;
+        lin.r.conservativeResize(n + k);
+        lin.r.tail(k) = end_weight * lin.c;
+    }
+
+    CurvatureModel& model_;
+    const ParameterMap map_;
+    const Problem p_;
+    std::vector<Foot> feet_;
+    EndMode mode_;
+    bool on_end_;
+    double max_length_ = 50.0;
+    double mu_ = 1e-3;
+    double cost_ = 0.0;
+    double gain_ = 0.0;
+};
+
+SolveReport solve_once(CurvatureModel& model, const std::vector<Point2>& points, const SolveOptions& options) {
+    return LevenbergMarquardt(model, points, options).run();
 }
 
 } // namespace
@@ -420,6 +540,9 @@ SolveReport solve(CurvatureModel& model, const std::vector<Point2>& points, cons
     if (report.gave_up) {
         report.rms_m = report.max_m = std::numeric_limits<double>::infinity();
         return report;
+    }
+    if (options.end) {
+        report.end_met = end_gap(model, model.knot_poses().back(), *options.end).cwiseAbs().maxCoeff() < end_tolerance;
     }
     const std::vector<double> d = point_distances(model, points);
     double sum = 0.0;

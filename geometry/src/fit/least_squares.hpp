@@ -34,6 +34,7 @@ struct SolveReport {
     double max_m = 0.0;
     int iterations = 0;
     bool gave_up = false; // stopped early: the fit could not reach give_up_rss
+    bool end_met = true;  // the end pose, if any, is met within end_tolerance (end_constraint.hpp)
 };
 
 // Distances of every point to the model's curve (after the last update).

@@ -1,0 +1,84 @@
+#include "end_constraint.hpp"
+
+#include <cmath>
+
+namespace railodd::geometry::fit {
+
+std::size_t end_rows(const CurvatureModel& m) { return m.knot_var.back() >= 0 ? 4 : 3; }
+
+Eigen::VectorXd end_gap(const CurvatureModel& m, const Pose& end, const Pose& target) {
+    Eigen::VectorXd c(static_cast<long>(end_rows(m)));
+    c[0] = end.x - target.x;
+    c[1] = end.y - target.y;
+    c[2] = end_heading_scale * (end.hdg - target.hdg);
+    if (c.size() == 4) {
+        c[3] = end_curvature_scale * (end.curvature - target.curvature);
+    }
+    return c;
+}
+
+namespace {
+
+// A^-1 C^T and the Schur complement C A^-1 C^T, factored.
+struct Schur {
+    Eigen::MatrixXd W;
+    Eigen::LDLT<Eigen::MatrixXd> S;
+    bool ok = false;
+};
+
+Schur schur(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::MatrixXd& C) {
+    Schur s;
+    s.W = A.solve(C.transpose());
+    const Eigen::MatrixXd S = C * s.W;
+    s.S.compute(S);
+    // A constraint no parameter can move leaves a (near) zero pivot: the
+    // model cannot reach the end exactly and the caller falls back to
+    // weighted rows.
+    const Eigen::VectorXd d = s.S.vectorD();
+    const double largest = d.cwiseAbs().maxCoeff();
+    s.ok = s.S.info() == Eigen::Success && std::isfinite(largest) && largest > 0.0 &&
+           d.minCoeff() > 1e-12 * largest && s.W.allFinite();
+    return s;
+}
+
+} // namespace
+
+std::optional<Eigen::VectorXd> constrained_step(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
+                                                const Eigen::MatrixXd& C, const Eigen::VectorXd& c) {
+    const Schur s = schur(A, C);
+    if (!s.ok) {
+        return std::nullopt;
+    }
+    const Eigen::VectorXd free_step = A.solve(-g);
+    const Eigen::VectorXd lambda = s.S.solve(c + C * free_step);
+    Eigen::VectorXd d = free_step - s.W * lambda;
+    if (!d.allFinite()) {
+        return std::nullopt;
+    }
+    return d;
+}
+
+double project_onto_end(Eigen::VectorXd& values, const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::MatrixXd& C,
+                        const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& apply) {
+    Eigen::VectorXd gap = apply(values);
+    double best = gap.cwiseAbs().maxCoeff();
+    const Schur s = schur(A, C);
+    if (!s.ok || !std::isfinite(best)) {
+        return best;
+    }
+    for (int it = 0; it < 8 && best >= end_tolerance; ++it) {
+        const Eigen::VectorXd next = values - s.W * s.S.solve(gap);
+        const Eigen::VectorXd next_gap = apply(next);
+        const double now = next_gap.cwiseAbs().maxCoeff();
+        if (!std::isfinite(now) || now > 0.5 * best) {
+            break; // not contracting: too far from the linearisation
+        }
+        values = next;
+        gap = next_gap;
+        best = now;
+    }
+    apply(values); // the model holds the values returned
+    return best;
+}
+
+} // namespace railodd::geometry::fit
