@@ -28,13 +28,51 @@ struct Foot {
     double cx = 0.0, cy = 0.0;
 };
 
+std::size_t segment_at(const std::vector<double>& s0, double s) {
+    const auto it = std::upper_bound(s0.begin(), s0.end() - 1, s);
+    return std::min<std::size_t>(s0.size() - 2, static_cast<std::size_t>(std::max<long>(0, it - s0.begin() - 1)));
+}
+
+struct Near {
+    double s;
+    double distance;
+};
+
+// Newton steps along the curve from chainage s to the foot of (x, y), as in
+// refine_feet. None where they do not settle: the caller searches samples.
+std::optional<Near> walk_to_foot(const CurvatureModel& m, const std::vector<Pose>& poses,
+                                 const std::vector<double>& s0, double s, const Point2& q) {
+    const double total = s0.back();
+    for (int it = 0; it < 12; ++it) {
+        s = std::clamp(s, 0.0, total);
+        const std::size_t j = segment_at(s0, s);
+        const Pose c = evaluate(poses[j], m.segment(j), s - s0[j]);
+        const double dx = q.x - c.x, dy = q.y - c.y;
+        const double ch = std::cos(c.hdg), sh = std::sin(c.hdg);
+        const double step = (dx * ch + dy * sh) / std::max(0.2, 1.0 - c.curvature * (-dx * sh + dy * ch));
+        if (std::abs(step) < 1e-3 || (s <= 0.0 && step < 0.0) || (s >= total && step > 0.0)) {
+            return Near{s, std::hypot(dx, dy)};
+        }
+        s += step;
+    }
+    return std::nullopt;
+}
+
 std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
                           const SolveOptions& opt) {
-    const IndexedAlignment ia(m.to_alignment(), 4.0);
     std::vector<double> s0(m.segments() + 1, 0.0);
     for (std::size_t j = 0; j < m.segments(); ++j) {
         s0[j + 1] = s0[j] + m.lengths[j];
     }
+    // Sampled search only where walking along the curve does not settle
+    // nearby: building the index evaluates the curve every 4 m.
+    std::optional<IndexedAlignment> ia;
+    auto index = [&]() -> const IndexedAlignment& {
+        if (!ia) {
+            ia.emplace(m.to_alignment(), 4.0);
+        }
+        return *ia;
+    };
     std::vector<Foot> feet;
     feet.reserve(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -44,16 +82,21 @@ std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& pose
         // as far on as the chord between the two points reaches.
         double s = 0.0;
         if (last) {
-            s = ia.length();
+            s = s0.back();
         } else if (!first) {
             const double prev = feet.empty() ? 0.0 : s0[feet.back().segment] + feet.back().u;
-            const double reach = i == 0 ? ia.length() : std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-            const Projection near = ia.project_within(pts[i].x, pts[i].y, prev - 50.0, prev + 1.5 * reach + 50.0);
-            s = near.distance < 25.0 ? near.s : ia.project(pts[i].x, pts[i].y).s;
+            const double reach = i == 0 ? s0.back() : std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+            const double lo = prev - 50.0, hi = prev + 1.5 * reach + 50.0;
+            const std::optional<Near> walked = walk_to_foot(m, poses, s0, i == 0 ? 0.0 : prev + reach, pts[i]);
+            if (walked && walked->distance < 25.0 && walked->s >= lo && walked->s <= hi) {
+                s = walked->s;
+            } else {
+                const Projection near = index().project_within(pts[i].x, pts[i].y, lo, hi);
+                s = near.distance < 25.0 ? near.s : index().project(pts[i].x, pts[i].y).s;
+            }
         }
         Foot f;
-        auto it = std::upper_bound(s0.begin(), s0.end() - 1, s);
-        f.segment = std::min<std::size_t>(m.segments() - 1, static_cast<std::size_t>(std::max<long>(0, it - s0.begin() - 1)));
+        f.segment = segment_at(s0, s);
         f.u = std::clamp(s - s0[f.segment], 0.0, m.lengths[f.segment]);
         f.at_end = last;
         f.at_start = first;
@@ -98,6 +141,15 @@ void refine_feet(const CurvatureModel& m, const std::vector<Pose>& poses, const 
             const double offset = -dx * sh + dy * ch;
             const double step = along / std::max(0.2, 1.0 - c.curvature * offset);
             if (std::abs(step) < 1e-6) {
+                break;
+            }
+            if (std::abs(step) < 1e-3 && f.u + step >= 0.0 && f.u + step <= m.lengths[f.segment]) {
+                // The last millimetre along the curve as an arc of the local
+                // curvature: the error (curvature rate times step cubed) is
+                // far below rounding, and it saves an evaluation per point.
+                const double mid = c.hdg + 0.5 * c.curvature * step;
+                c = {c.x + step * std::cos(mid), c.y + step * std::sin(mid), c.hdg + c.curvature * step, c.curvature};
+                f.u += step;
                 break;
             }
             double u = f.u + step;
@@ -191,11 +243,19 @@ Point2 rigid(const Point2& c, const Pose& from, const Pose& to) {
 void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, bool from_start,
                      const std::vector<Pose>& poses, const std::vector<Foot>& feet, const std::vector<Point2>& curve,
                      std::vector<Point2>& out, Pose& end_out) {
-    std::vector<Pose> p2(poses);
     if (from_start) {
-        p2[0] = m2.start;
-        p2[0].curvature = m2.knot_curvature(0);
+        // The start pose moves the whole curve rigidly: no evaluation needed.
+        const Pose& from = poses.front();
+        const Pose to{m2.start.x, m2.start.y, m2.start.hdg, from.curvature};
+        for (std::size_t i = 0; i < feet.size(); ++i) {
+            out[i] = rigid(curve[i], from, to);
+        }
+        const Pose& e = poses.back();
+        const Point2 q = rigid({e.x, e.y}, from, to);
+        end_out = {q.x, q.y, e.hdg + (to.hdg - from.hdg), e.curvature};
+        return;
     }
+    std::vector<Pose> p2(poses);
     for (std::size_t j = a; j <= b; ++j) {
         p2[j + 1] = evaluate(p2[j], m2.segment(j), m2.lengths[j]);
     }
