@@ -261,16 +261,16 @@ int ConvertCommand::run() {
     odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
     odd::add_odd_user_data(profile, map.map);
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, profile);
-    const std::string xodr_text = xodr::write_xodr(map.map, mo.revision);
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 
-    // Phase 5: stage every output, then move them into place together.
+    // Phase 5: stage every output, then move them into place together. The
+    // large ones are streamed: no output is ever held whole in memory.
     OutputStage stage(opt_.outdir);
-    stage.write_text("map.xodr", xodr_text);
-    stage.write_text("odd_profile.json", odd::to_json_text(profile));
-    stage.write_text("odd_profile.geojson", odd::to_geojson(profile));
-    stage.write_text("odd_profile.csv", odd::to_csv(profile));
+    stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out); });
+    stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
+    stage.write_with("odd_profile.geojson", [&](std::ostream& out) { odd::write_geojson(profile, out); });
+    stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
     stage.write_text("ingest.geojson", ingest::to_geojson(result));
     stage.write_text("geometry.geojson", geometry::to_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track"));
     stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));

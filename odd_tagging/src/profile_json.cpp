@@ -157,27 +157,32 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
 // The same document as to_json(profile).dump(), written element by element:
 // a whole network's profile (180,000 elements on Cologne) never exists as one
 // JSON tree, and each element sits on its own line.
-std::string to_json_text(const OddProfile& profile) {
+void write_json(const OddProfile& profile, std::ostream& out) {
     OddProfile bare{profile.taxonomy_name, profile.taxonomy_version, profile.taxonomy_file,
                     profile.route, profile.length_m, profile.tracks, {}, {}, {}};
     bare.along_route = profile.along_route;
     ojson head = to_json(bare);
-    std::string out = "{\n";
+    out << "{\n";
     for (const char* key : {"railodd", "taxonomy", "route"}) {
-        out += " \"" + std::string{key} + "\": " + head[key].dump() + ",\n";
+        out << " \"" << key << "\": " << head[key].dump() << ",\n";
     }
-    out += " \"elements\": [\n";
+    out << " \"elements\": [\n";
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        out += "  " + element_json(profile.elements[i]).dump() + (i + 1 < profile.elements.size() ? ",\n" : "\n");
+        out << "  " << element_json(profile.elements[i]).dump() << (i + 1 < profile.elements.size() ? ",\n" : "\n");
     }
-    out += " ],\n \"unparsed\": [\n";
+    out << " ],\n \"unparsed\": [\n";
     for (std::size_t i = 0; i < profile.unparsed.size(); ++i) {
         const auto& u = profile.unparsed[i];
-        out += "  " + ojson{{"osm_ids", u.osm_ids}, {"tag", u.tag}, {"value", u.value}, {"reason", u.reason}}.dump() +
-               (i + 1 < profile.unparsed.size() ? ",\n" : "\n");
+        out << "  " << ojson{{"osm_ids", u.osm_ids}, {"tag", u.tag}, {"value", u.value}, {"reason", u.reason}}.dump()
+            << (i + 1 < profile.unparsed.size() ? ",\n" : "\n");
     }
-    out += " ],\n \"summary\": " + (profile.summary.is_null() ? ojson::object() : profile.summary).dump(1) + "\n}\n";
-    return out;
+    out << " ],\n \"summary\": " << (profile.summary.is_null() ? ojson::object() : profile.summary).dump(1) << "\n}\n";
+}
+
+std::string to_json_text(const OddProfile& profile) {
+    std::ostringstream out;
+    write_json(profile, out);
+    return std::move(out).str();
 }
 
 namespace {

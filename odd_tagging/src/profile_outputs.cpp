@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ostream>
+#include <sstream>
 
 namespace railodd::odd {
 
@@ -109,29 +111,42 @@ std::string joined(const std::vector<std::string>& parts, const char* sep) {
 
 // One feature per line: a whole route's profile stays a few MB, and diffs of
 // two runs read element by element.
-std::string to_geojson(const OddProfile& profile) {
-    std::string out = "{\"type\": \"FeatureCollection\", \"name\": \"odd_profile\", \"features\": [\n";
+void write_geojson(const OddProfile& profile, std::ostream& out) {
+    out << "{\"type\": \"FeatureCollection\", \"name\": \"odd_profile\", \"features\": [\n";
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        out += feature(profile.elements[i]).dump();
-        out += i + 1 < profile.elements.size() ? ",\n" : "\n";
+        out << feature(profile.elements[i]).dump() << (i + 1 < profile.elements.size() ? ",\n" : "\n");
     }
-    return out + "]}\n";
+    out << "]}\n";
 }
 
-std::string to_csv(const OddProfile& profile) {
-    std::string out;
-    append_row(out, {"odd_element", "element_id", "road_id", "s_start", "s_end", "chainage_start", "chainage_end",
+std::string to_geojson(const OddProfile& profile) {
+    std::ostringstream out;
+    write_geojson(profile, out);
+    return std::move(out).str();
+}
+
+void write_csv(const OddProfile& profile, std::ostream& out) {
+    std::string row;
+    append_row(row, {"odd_element", "element_id", "road_id", "s_start", "s_end", "chainage_start", "chainage_end",
                      "track", "point", "attributes", "osm_ids", "source"});
+    out << row;
     for (const auto& e : profile.elements) {
         std::vector<std::string> attrs;
         for (const auto& a : e.attributes) {
             attrs.push_back(a.name + "=" + value_text(a.value));
         }
-        append_row(out, {e.element, e.element_id, e.road_id, metres(e.s_start), metres(e.s_end),
+        row.clear();
+        append_row(row, {e.element, e.element_id, e.road_id, metres(e.s_start), metres(e.s_end),
                          metres(e.chainage_start), metres(e.chainage_end), std::to_string(e.track),
                          e.point ? "true" : "false", joined(attrs, ";"), joined(e.osm_ids, " "), e.source});
+        out << row;
     }
-    return out;
+}
+
+std::string to_csv(const OddProfile& profile) {
+    std::ostringstream out;
+    write_csv(profile, out);
+    return std::move(out).str();
 }
 
 } // namespace railodd::odd

@@ -45,9 +45,16 @@ fs::path OutputStage::staged_path(std::string_view name) {
 }
 
 void OutputStage::write_text(std::string_view name, std::string_view content) {
+    write_with(name, [&](std::ostream& out) { out.write(content.data(), static_cast<std::streamsize>(content.size())); });
+}
+
+void OutputStage::write_with(std::string_view name, const std::function<void(std::ostream&)>& write) {
     const fs::path path = staged_path(name);
     std::ofstream out(path, std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    if (!out) {
+        throw OutputError(path.string(), "cannot open for writing");
+    }
+    write(out);
     out.close();
     if (!out) {
         throw OutputError(path.string(), "write failed");

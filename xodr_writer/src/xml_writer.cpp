@@ -2,6 +2,8 @@
 
 #include "xml_support.hpp"
 
+#include <sstream>
+
 namespace railodd::xodr {
 
 namespace {
@@ -185,14 +187,9 @@ void write_header(pugi::xml_node root, const Header& h, Revision revision) {
     n.append_child("geoReference").append_child(pugi::node_cdata).set_value(h.geo_reference.c_str());
 }
 
-struct StringWriter : pugi::xml_writer {
-    std::string out;
-    void write(const void* data, size_t size) override { out.append(static_cast<const char*>(data), size); }
-};
-
 } // namespace
 
-std::string write_xodr(const Map& map, Revision revision) {
+void write_xodr(const Map& map, Revision revision, std::ostream& out) {
     pugi::xml_document doc;
     pugi::xml_node decl = doc.append_child(pugi::node_declaration);
     decl.append_attribute("version") = "1.0";
@@ -208,9 +205,13 @@ std::string write_xodr(const Map& map, Revision revision) {
     for (const auto& s : map.stations) {
         xml::write_station(root, s);
     }
-    StringWriter w;
-    doc.save(w, "  ", pugi::format_default, pugi::encoding_utf8);
-    return std::move(w.out);
+    doc.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
+}
+
+std::string write_xodr(const Map& map, Revision revision) {
+    std::ostringstream out;
+    write_xodr(map, revision, out);
+    return std::move(out).str();
 }
 
 } // namespace railodd::xodr

@@ -17,6 +17,7 @@
 // graph edge `track`'s fitted centreline when no route is chosen).
 #include <cstddef>
 #include <filesystem>
+#include <iosfwd>
 #include <string>
 #include <variant>
 #include <vector>
@@ -74,6 +75,7 @@ struct OddProfile {
 nlohmann::ordered_json to_json(const OddProfile& profile);
 // The same document as text, one element per line, without building the tree.
 std::string to_json_text(const OddProfile& profile);
+void write_json(const OddProfile& profile, std::ostream& out);
 OddProfile profile_from_json(const nlohmann::json& j); // throws std::invalid_argument naming the missing key
 // The same keeping the file's key order (attribute order, summary classes);
 // nlohmann::json sorts object keys.

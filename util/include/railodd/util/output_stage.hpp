@@ -3,6 +3,8 @@
 // the output directory and renamed into place only when the command succeeds,
 // so a failed run leaves no half-written file behind.
 #include <filesystem>
+#include <functional>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +21,10 @@ public:
     // Path inside the staging folder where the output `name` is to be written.
     std::filesystem::path staged_path(std::string_view name);
     void write_text(std::string_view name, std::string_view content);
+    // Streams the output `name` straight into its staged file: large outputs
+    // (a national network's profile runs to hundreds of MB) are never held
+    // as one string.
+    void write_with(std::string_view name, const std::function<void(std::ostream&)>& write);
 
     // Renames every staged file into the output directory; the final paths.
     std::vector<std::filesystem::path> commit();

@@ -4,10 +4,13 @@
 // byte-identical for identical maps and locale-independent.
 #include "railodd/xodr/model.hpp"
 
+#include <iosfwd>
 #include <string>
 
 namespace railodd::xodr {
 
 std::string write_xodr(const Map& map, Revision revision);
+// The same, streamed: the document is never held as one string.
+void write_xodr(const Map& map, Revision revision, std::ostream& out);
 
 } // namespace railodd::xodr
