@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
+#include <future>
 #include <optional>
 #include <filesystem>
 #include <iostream>
@@ -56,7 +57,7 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--station-distance", opt_.station_distance_m, "Keep stations and halts within this many metres")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
-    app->add_option("--threads", opt_.threads, "Threads decoding PBF and fitting tracks (default: one per hardware thread; outputs do not depend on it)");
+    app->add_option("--threads", opt_.threads, "Threads decoding PBF, fitting tracks and writing outputs (default: one per hardware thread; outputs do not depend on it)");
     app->add_flag("--estimate-cant", opt_.estimate_cant,
                   "Estimate equilibrium cant from maxspeed and radius where railway:cant is not mapped (max 160 mm)");
     app->add_option("--odr-version", opt_.odr_version, "OpenDRIVE revision of map.xodr: 1.6, 1.7 or 1.8")
@@ -261,19 +262,27 @@ int ConvertCommand::run() {
     odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
     odd::add_odd_user_data(profile, map.map);
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, profile);
-    timer.stop();
-    result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 
     // Phase 5: stage every output, then move them into place together. The
     // large ones are streamed: no output is ever held whole in memory.
+    timer.start("write_outputs");
     OutputStage stage(opt_.outdir);
+    // The profile's GeoJSON (the slowest to write) on a second thread, the
+    // rest on this one: each file has one writer, so no byte depends on the
+    // thread count.
+    std::future<void> geojson_written =
+        std::async(opt_.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
+            stage.write_with("odd_profile.geojson", [&](std::ostream& out) { odd::write_geojson(profile, out); });
+        });
     stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out); });
     stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
-    stage.write_with("odd_profile.geojson", [&](std::ostream& out) { odd::write_geojson(profile, out); });
     stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
     stage.write_text("ingest.geojson", ingest::to_geojson(result));
     stage.write_text("geometry.geojson", geometry::to_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track"));
     stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));
+    geojson_written.get();
+    timer.stop();
+    result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
     nlohmann::ordered_json report = make_report(result);
     report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
     report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);

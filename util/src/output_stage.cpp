@@ -32,8 +32,11 @@ OutputStage::~OutputStage() {
 
 fs::path OutputStage::staged_path(std::string_view name) {
     std::string n{name};
-    if (std::find(names_.begin(), names_.end(), n) == names_.end()) {
-        names_.push_back(n);
+    {
+        const std::lock_guard<std::mutex> lock(names_mutex_);
+        if (std::find(names_.begin(), names_.end(), n) == names_.end()) {
+            names_.push_back(n);
+        }
     }
     // Names may hold folders ("catalogs/VehicleCatalog.xosc").
     std::error_code ec;

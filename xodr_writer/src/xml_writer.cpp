@@ -189,23 +189,36 @@ void write_header(pugi::xml_node root, const Header& h, Revision revision) {
 
 } // namespace
 
-void write_xodr(const Map& map, Revision revision, std::ostream& out) {
+namespace {
+
+// One child of <OpenDRIVE>, built in a small document of its own and printed
+// at depth 1: the whole map never exists as one DOM (on a national network
+// that would take gigabytes), and the bytes are those the full DOM prints.
+template <class Build>
+void write_element(std::ostream& out, Build build) {
     pugi::xml_document doc;
-    pugi::xml_node decl = doc.append_child(pugi::node_declaration);
-    decl.append_attribute("version") = "1.0";
-    decl.append_attribute("encoding") = "UTF-8";
     pugi::xml_node root = doc.append_child("OpenDRIVE");
-    write_header(root, map.header, revision);
+    build(root);
+    for (pugi::xml_node n : root.children()) {
+        n.print(out, "  ", pugi::format_default, pugi::encoding_utf8, 1);
+    }
+}
+
+} // namespace
+
+void write_xodr(const Map& map, Revision revision, std::ostream& out) {
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<OpenDRIVE>\n";
+    write_element(out, [&](pugi::xml_node root) { write_header(root, map.header, revision); });
     for (const auto& r : map.roads) {
-        write_road(root, r, revision);
+        write_element(out, [&](pugi::xml_node root) { write_road(root, r, revision); });
     }
     for (const auto& j : map.junctions) {
-        xml::write_junction(root, j, revision);
+        write_element(out, [&](pugi::xml_node root) { xml::write_junction(root, j, revision); });
     }
     for (const auto& s : map.stations) {
-        xml::write_station(root, s);
+        write_element(out, [&](pugi::xml_node root) { xml::write_station(root, s); });
     }
-    doc.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
+    out << "</OpenDRIVE>\n";
 }
 
 std::string write_xodr(const Map& map, Revision revision) {

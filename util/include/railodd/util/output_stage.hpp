@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +20,7 @@ public:
     ~OutputStage();
 
     // Path inside the staging folder where the output `name` is to be written.
+    // This and the writers may be called from several threads, one per file.
     std::filesystem::path staged_path(std::string_view name);
     void write_text(std::string_view name, std::string_view content);
     // Streams the output `name` straight into its staged file: large outputs
@@ -35,6 +37,7 @@ private:
     std::filesystem::path outdir_;
     std::filesystem::path staging_;
     std::vector<std::string> names_;
+    std::mutex names_mutex_;
     bool committed_ = false;
 };
 
