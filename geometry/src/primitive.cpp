@@ -52,7 +52,7 @@ std::pair<double, double> unit_phase_integral(double a, double b) {
         case 2: re -= integral; break;
         default: im -= integral; break;
         }
-        if (std::abs(integral) < 1e-18) {
+        if (std::abs(integral) < 1e-16) {
             break;
         }
     }

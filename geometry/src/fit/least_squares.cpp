@@ -122,8 +122,10 @@ double huber(double r, double c = 2.0) {
 // Moves every foot to the nearest curve point by Newton steps along the curve
 // from where it was: after one least-squares step the feet move little, and
 // this costs a few evaluations per point instead of a global search.
+// `at_feet`, where given, is the curve at every foot as it stands (the cost
+// of the accepted step evaluated it): the first Newton step starts there.
 void refine_feet(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
-                 std::vector<Foot>& feet) {
+                 std::vector<Foot>& feet, const std::vector<Pose>* at_feet) {
     const std::size_t last = m.segments() - 1;
     for (std::size_t i = 0; i < feet.size(); ++i) {
         Foot& f = feet[i];
@@ -131,7 +133,8 @@ void refine_feet(const CurvatureModel& m, const std::vector<Pose>& poses, const 
         f.u = std::clamp(f.u, 0.0, m.lengths[f.segment]);
         Pose c{};
         for (int it = 0; it < 8; ++it) {
-            c = evaluate(poses[f.segment], m.segment(f.segment), f.at_end ? m.lengths[f.segment] : f.u);
+            c = it == 0 && at_feet ? (*at_feet)[i]
+                                   : evaluate(poses[f.segment], m.segment(f.segment), f.at_end ? m.lengths[f.segment] : f.u);
             if (f.at_end || f.at_start) {
                 break;
             }
@@ -285,6 +288,12 @@ double step_for(const ParameterMap& map, std::size_t i) {
     return 1e-5;
 }
 
+// A model evaluated at its knots and at the feet of the points.
+struct Evaluated {
+    std::vector<Pose> knots;
+    std::vector<Pose> at_feet;
+};
+
 struct Linearisation {
     Eigen::MatrixXd J; // data rows
     Eigen::VectorXd r;
@@ -292,9 +301,11 @@ struct Linearisation {
     Eigen::VectorXd c;
 };
 
-Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, std::vector<Foot>& feet) {
-    const std::vector<Pose> poses = m.knot_poses();
-    refine_feet(m, poses, p.pts, feet);
+// `known`, where given, is m evaluated at the feet as they stand.
+Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, std::vector<Foot>& feet,
+                        const Evaluated* known) {
+    const std::vector<Pose> poses = known ? known->knots : m.knot_poses();
+    refine_feet(m, poses, p.pts, feet, known ? &known->at_feet : nullptr);
     std::vector<Point2> curve(feet.size());
     for (std::size_t i = 0; i < feet.size(); ++i) {
         curve[i] = {feet[i].cx, feet[i].cy};
@@ -332,14 +343,18 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
 // Cost of a trial model with the feet (and their normals) of the current
 // linearisation held fixed, as in point-to-curve ICP; the next linearisation
 // moves the feet. With end_rows, the end pose's weighted rows count too.
-double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows) {
-    const std::vector<Pose> poses = m.knot_poses();
+// The evaluation is kept in `e`: the next linearisation starts from it.
+double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows,
+                    Evaluated& e) {
+    e.knots = m.knot_poses();
+    const std::vector<Pose>& poses = e.knots;
+    e.at_feet.resize(feet.size());
     std::vector<Point2> curve(feet.size());
     for (std::size_t i = 0; i < feet.size(); ++i) {
         const Foot& f = feet[i];
         const double u = f.at_end ? m.lengths[f.segment] : std::min(f.u, m.lengths[f.segment]);
-        const Pose c = evaluate(poses[f.segment], m.segment(f.segment), u);
-        curve[i] = {c.x, c.y};
+        e.at_feet[i] = evaluate(poses[f.segment], m.segment(f.segment), u);
+        curve[i] = {e.at_feet[i].x, e.at_feet[i].y};
     }
     Eigen::VectorXd r(static_cast<long>(row_count(m, p)));
     fill_residuals(m, feet, curve, p, r);
@@ -467,7 +482,8 @@ private:
 
     // One linearisation and up to ten damped steps from it.
     Outcome iterate() {
-        Linearisation lin = linearise(model_, map_, p_, feet_);
+        Linearisation lin = linearise(model_, map_, p_, feet_, known_ ? &*known_ : nullptr);
+        known_.reset();
         if (mode_ == EndMode::weighted) {
             append_end_rows(lin);
         }
@@ -493,13 +509,15 @@ private:
             if (!on_end_ && (t->gap < end_tolerance || t->gap < (1.0 - 0.25 * share) * gap)) {
                 // Nearer the end: the data cost does not count yet.
                 on_end_ = t->gap < end_tolerance;
-                const double c = cost_at_feet(t->model, p_, feet_, false);
-                accept(std::move(t->model), cost, c);
+                Evaluated e;
+                const double c = cost_at_feet(t->model, p_, feet_, false, e);
+                accept(std::move(t->model), cost, c, std::move(e));
                 return on_end_ ? Outcome::reached_end : Outcome::approaching_end;
             }
-            const double c = cost_at_feet(t->model, p_, feet_, mode_ == EndMode::weighted);
+            Evaluated e;
+            const double c = cost_at_feet(t->model, p_, feet_, mode_ == EndMode::weighted, e);
             if (on_end_ && t->gap < end_tolerance && std::isfinite(c) && c < cost) {
-                accept(std::move(t->model), cost, c);
+                accept(std::move(t->model), cost, c, std::move(e));
                 return Outcome::improved;
             }
             mu_ *= 4;
@@ -511,7 +529,8 @@ private:
         return Outcome::stuck;
     }
 
-    void accept(CurvatureModel&& m, double before, double after) {
+    void accept(CurvatureModel&& m, double before, double after, Evaluated&& e) {
+        known_ = std::move(e);
         gain_ = (before - after) / std::max(before, 1e-30);
         cost_ = after;
         model_ = std::move(m);
@@ -566,6 +585,7 @@ private:
     bool on_end_;
     double max_length_ = 50.0;
     double mu_ = 1e-3;
+    std::optional<Evaluated> known_; // model_ evaluated by the cost of the step that made it
     double cost_ = 0.0;
     double gain_ = 0.0;
 };
