@@ -1,0 +1,345 @@
+// Feet, residual rows and their Jacobian (residuals.hpp).
+#include "residuals.hpp"
+
+#include "end_constraint.hpp"
+
+#include "railodd/geometry/indexed_alignment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace railodd::geometry::fit {
+
+namespace {
+
+std::size_t segment_at(const std::vector<double>& s0, double s) {
+    const auto it = std::upper_bound(s0.begin(), s0.end() - 1, s);
+    return std::min<std::size_t>(s0.size() - 2, static_cast<std::size_t>(std::max<long>(0, it - s0.begin() - 1)));
+}
+
+struct Near {
+    double s;
+    double distance;
+};
+
+// Newton steps along the curve from chainage s to the foot of (x, y), as in
+// refine_feet. None where they do not settle: the caller searches samples.
+std::optional<Near> walk_to_foot(const CurvatureModel& m, const std::vector<Pose>& poses,
+                                 const std::vector<double>& s0, double s, const Point2& q) {
+    const double total = s0.back();
+    for (int it = 0; it < 12; ++it) {
+        s = std::clamp(s, 0.0, total);
+        const std::size_t j = segment_at(s0, s);
+        const Pose c = evaluate(poses[j], m.segment(j), s - s0[j]);
+        const double dx = q.x - c.x, dy = q.y - c.y;
+        const double ch = std::cos(c.hdg), sh = std::sin(c.hdg);
+        const double step = (dx * ch + dy * sh) / std::max(0.2, 1.0 - c.curvature * (-dx * sh + dy * ch));
+        if (std::abs(step) < 1e-3 || (s <= 0.0 && step < 0.0) || (s >= total && step > 0.0)) {
+            return Near{s, std::hypot(dx, dy)};
+        }
+        s += step;
+    }
+    return std::nullopt;
+}
+
+// Huber-weighted residual: quadratic up to c, linear beyond, so a few real
+// kinks (transition ends, a turnout) are not smoothed away with the noise.
+double huber(double r, double c = 2.0) {
+    const double a = std::abs(r);
+    return a <= c ? r : std::copysign(std::sqrt(2 * c * a - c * c), r);
+}
+
+// Moves every foot to the nearest curve point by Newton steps along the curve
+// from where it was: after one least-squares step the feet move little, and
+// this costs a few evaluations per point instead of a global search.
+// `at_feet`, where given, is the curve at every foot as it stands (the cost
+// of the accepted step evaluated it): the first Newton step starts there.
+void refine_feet(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
+                 std::vector<Foot>& feet, const std::vector<Pose>* at_feet) {
+    const std::size_t last = m.segments() - 1;
+    for (std::size_t i = 0; i < feet.size(); ++i) {
+        Foot& f = feet[i];
+        f.segment = std::min(f.segment, last);
+        f.u = std::clamp(f.u, 0.0, m.lengths[f.segment]);
+        Pose c{};
+        for (int it = 0; it < 8; ++it) {
+            c = it == 0 && at_feet ? (*at_feet)[i]
+                                   : evaluate(poses[f.segment], m.segment(f.segment), f.at_end ? m.lengths[f.segment] : f.u);
+            if (f.at_end || f.at_start) {
+                break;
+            }
+            const double dx = pts[i].x - c.x, dy = pts[i].y - c.y;
+            const double ch = std::cos(c.hdg), sh = std::sin(c.hdg);
+            const double along = dx * ch + dy * sh;
+            const double offset = -dx * sh + dy * ch;
+            const double step = along / std::max(0.2, 1.0 - c.curvature * offset);
+            if (std::abs(step) < 1e-6) {
+                break;
+            }
+            if (std::abs(step) < 1e-3 && f.u + step >= 0.0 && f.u + step <= m.lengths[f.segment]) {
+                // The last millimetre along the curve as an arc of the local
+                // curvature: the error (curvature rate times step cubed) is
+                // far below rounding, and it saves an evaluation per point.
+                const double mid = c.hdg + 0.5 * c.curvature * step;
+                c = {c.x + step * std::cos(mid), c.y + step * std::sin(mid), c.hdg + c.curvature * step, c.curvature};
+                f.u += step;
+                break;
+            }
+            double u = f.u + step;
+            while (u < 0.0 && f.segment > 0) {
+                --f.segment;
+                u += m.lengths[f.segment];
+            }
+            while (u > m.lengths[f.segment] && f.segment < last) {
+                u -= m.lengths[f.segment];
+                ++f.segment;
+            }
+            f.u = std::clamp(u, 0.0, m.lengths[f.segment]);
+        }
+        f.cx = c.x;
+        f.cy = c.y;
+        f.tx = std::cos(c.hdg);
+        f.ty = std::sin(c.hdg);
+        f.nx = -f.ty;
+        f.ny = f.tx;
+    }
+}
+
+// Residual rows: normal distance of every point, the along-track distance of
+// the first and last point, curvature kinks. The end pose is a constraint
+// (end_constraint.hpp), or weighted rows appended where it cannot be one.
+std::size_t row_count(const CurvatureModel& m, const Problem& p) {
+    std::size_t rows = p.pts.size() + (p.opt.pin_first ? 1 : 0) + (p.opt.pin_last ? 1 : 0);
+    if (p.opt.kink_sigma > 0 && m.knot_var.size() > 2) {
+        rows += m.knot_var.size() - 2;
+    }
+    if (p.opt.ridge_sigma > 0) {
+        rows += m.knot_var.size();
+    }
+    return rows;
+}
+
+void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
+                    const std::vector<Point2>& curve, const Problem& p, Eigen::VectorXd& r) {
+    const double w = 1.0 / p.opt.sigma_m;
+    std::size_t row = 0;
+    for (std::size_t i = 0; i < feet.size(); ++i) {
+        r[row++] = w * ((p.pts[i].x - curve[i].x) * feet[i].nx + (p.pts[i].y - curve[i].y) * feet[i].ny);
+    }
+    auto along = [&](std::size_t i) {
+        r[row++] = w * ((p.pts[i].x - curve[i].x) * feet[i].tx + (p.pts[i].y - curve[i].y) * feet[i].ty);
+    };
+    if (p.opt.pin_first) {
+        along(0);
+    }
+    if (p.opt.pin_last) {
+        along(feet.size() - 1);
+    }
+    if (p.opt.kink_sigma > 0 && m.knot_var.size() > 2) {
+        for (std::size_t k = 1; k + 1 < m.knot_var.size(); ++k) {
+            const double a = m.knot_curvature(k - 1), b = m.knot_curvature(k), c = m.knot_curvature(k + 1);
+            // Tight curves change curvature by more in absolute terms: the
+            // allowed kink grows with the local curvature.
+            const double scale = std::max(p.opt.kink_sigma, 0.25 * std::max({std::abs(a), std::abs(b), std::abs(c)}));
+            r[row++] = huber((a - 2 * b + c) / scale);
+        }
+    }
+    if (p.opt.ridge_sigma > 0) {
+        // Per unit length: long knot intervals are long because nodes are
+        // sparse there, which mappers do on straight track.
+        for (std::size_t k = 0; k < m.knot_var.size(); ++k) {
+            const double left = k > 0 ? m.lengths[k - 1] : 0.0;
+            const double right = k < m.segments() ? m.lengths[k] : 0.0;
+            r[row++] = huber(m.knot_curvature(k) * std::sqrt(0.5 * (left + right) / 20.0) / p.opt.ridge_sigma);
+        }
+    }
+}
+
+Point2 rigid(const Point2& c, const Pose& from, const Pose& to) {
+    const double d = to.hdg - from.hdg;
+    const double dx = c.x - from.x, dy = c.y - from.y;
+    return {to.x + dx * std::cos(d) - dy * std::sin(d), to.y + dx * std::sin(d) + dy * std::cos(d)};
+}
+
+// The curve points and end pose of a model that differs from the current one
+// only in segments [a, b]: recomputed there, moved rigidly downstream.
+void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, bool from_start,
+                     const std::vector<Pose>& poses, const std::vector<Foot>& feet, const std::vector<Point2>& curve,
+                     std::vector<Point2>& out, Pose& end_out) {
+    if (from_start) {
+        // The start pose moves the whole curve rigidly: no evaluation needed.
+        const Pose& from = poses.front();
+        const Pose to{m2.start.x, m2.start.y, m2.start.hdg, from.curvature};
+        for (std::size_t i = 0; i < feet.size(); ++i) {
+            out[i] = rigid(curve[i], from, to);
+        }
+        const Pose& e = poses.back();
+        const Point2 q = rigid({e.x, e.y}, from, to);
+        end_out = {q.x, q.y, e.hdg + (to.hdg - from.hdg), e.curvature};
+        return;
+    }
+    std::vector<Pose> p2(poses);
+    for (std::size_t j = a; j <= b; ++j) {
+        p2[j + 1] = evaluate(p2[j], m2.segment(j), m2.lengths[j]);
+    }
+    for (std::size_t i = 0; i < feet.size(); ++i) {
+        const Foot& f = feet[i];
+        if (f.segment < a) {
+            out[i] = curve[i];
+        } else if (f.segment <= b) {
+            const Pose c = evaluate(p2[f.segment], m2.segment(f.segment), f.at_end ? m2.lengths[f.segment] : f.u);
+            out[i] = {c.x, c.y};
+        } else {
+            out[i] = rigid(curve[i], poses[b + 1], p2[b + 1]);
+        }
+    }
+    const Pose& e = poses.back();
+    if (b + 1 == poses.size() - 1) {
+        end_out = p2.back();
+    } else {
+        const Point2 q = rigid({e.x, e.y}, poses[b + 1], p2[b + 1]);
+        end_out = {q.x, q.y, e.hdg + (p2[b + 1].hdg - poses[b + 1].hdg), e.curvature};
+    }
+}
+
+double step_for(const ParameterMap& map, std::size_t i) {
+    if (map.is_curvature(i)) return 1e-8;
+    if (map.is_start(i) && map.index(i) == 2) return 1e-7;
+    return 1e-5;
+}
+
+} // namespace
+
+std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
+                          const SolveOptions& opt) {
+    std::vector<double> s0(m.segments() + 1, 0.0);
+    for (std::size_t j = 0; j < m.segments(); ++j) {
+        s0[j + 1] = s0[j] + m.lengths[j];
+    }
+    // Sampled search only where walking along the curve does not settle
+    // nearby: building the index evaluates the curve every 4 m.
+    std::optional<IndexedAlignment> ia;
+    auto index = [&]() -> const IndexedAlignment& {
+        if (!ia) {
+            ia.emplace(m.to_alignment(), 4.0);
+        }
+        return *ia;
+    };
+    std::vector<Foot> feet;
+    feet.reserve(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const bool last = opt.pin_last && i + 1 == pts.size();
+        const bool first = opt.pin_first && i == 0;
+        // Points are in track order: search near the previous point's foot,
+        // as far on as the chord between the two points reaches.
+        double s = 0.0;
+        if (last) {
+            s = s0.back();
+        } else if (!first) {
+            const double prev = feet.empty() ? 0.0 : s0[feet.back().segment] + feet.back().u;
+            const double reach = i == 0 ? s0.back() : std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+            const double lo = prev - 50.0, hi = prev + 1.5 * reach + 50.0;
+            const std::optional<Near> walked = walk_to_foot(m, poses, s0, i == 0 ? 0.0 : prev + reach, pts[i]);
+            if (walked && walked->distance < 25.0 && walked->s >= lo && walked->s <= hi) {
+                s = walked->s;
+            } else {
+                const Projection near = index().project_within(pts[i].x, pts[i].y, lo, hi);
+                s = near.distance < 25.0 ? near.s : index().project(pts[i].x, pts[i].y).s;
+            }
+        }
+        Foot f;
+        f.segment = segment_at(s0, s);
+        f.u = std::clamp(s - s0[f.segment], 0.0, m.lengths[f.segment]);
+        f.at_end = last;
+        f.at_start = first;
+        const Pose c = evaluate(poses[f.segment], m.segment(f.segment), f.at_end ? m.lengths[f.segment] : f.u);
+        f.cx = c.x;
+        f.cy = c.y;
+        f.tx = std::cos(c.hdg);
+        f.ty = std::sin(c.hdg);
+        f.nx = -f.ty;
+        f.ny = f.tx;
+        feet.push_back(f);
+    }
+    return feet;
+}
+
+Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, std::vector<Foot>& feet,
+                        const Evaluated* known) {
+    const std::vector<Pose> poses = known ? known->knots : m.knot_poses();
+    refine_feet(m, poses, p.pts, feet, known ? &known->at_feet : nullptr);
+    std::vector<Point2> curve(feet.size());
+    for (std::size_t i = 0; i < feet.size(); ++i) {
+        curve[i] = {feet[i].cx, feet[i].cy};
+    }
+    const std::size_t rows = row_count(m, p);
+    Linearisation lin;
+    lin.J = Eigen::MatrixXd::Zero(static_cast<long>(rows), static_cast<long>(map.size()));
+    lin.r = Eigen::VectorXd::Zero(static_cast<long>(rows));
+    fill_residuals(m, feet, curve, p, lin.r);
+    if (p.opt.end) {
+        lin.c = end_gap(m, poses.back(), *p.opt.end);
+        lin.C = Eigen::MatrixXd::Zero(lin.c.size(), static_cast<long>(map.size()));
+    }
+    const std::vector<double> base = map.get(m);
+    std::vector<Point2> moved(feet.size());
+    Eigen::VectorXd r2(static_cast<long>(rows));
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        CurvatureModel m2 = m;
+        std::vector<double> v = base;
+        const double h = step_for(map, i);
+        v[i] += h;
+        map.set(m2, v);
+        const auto [a, b] = map.influence(i);
+        Pose end2;
+        perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, moved, end2);
+        fill_residuals(m2, feet, moved, p, r2);
+        lin.J.col(static_cast<long>(i)) = (r2 - lin.r) / h;
+        if (p.opt.end) {
+            lin.C.col(static_cast<long>(i)) = (end_gap(m2, end2, *p.opt.end) - lin.c) / h;
+        }
+    }
+    return lin;
+}
+
+double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows,
+                    Evaluated& e) {
+    e.knots = m.knot_poses();
+    const std::vector<Pose>& poses = e.knots;
+    e.at_feet.resize(feet.size());
+    std::vector<Point2> curve(feet.size());
+    for (std::size_t i = 0; i < feet.size(); ++i) {
+        const Foot& f = feet[i];
+        const double u = f.at_end ? m.lengths[f.segment] : std::min(f.u, m.lengths[f.segment]);
+        e.at_feet[i] = evaluate(poses[f.segment], m.segment(f.segment), u);
+        curve[i] = {e.at_feet[i].x, e.at_feet[i].y};
+    }
+    Eigen::VectorXd r(static_cast<long>(row_count(m, p)));
+    fill_residuals(m, feet, curve, p, r);
+    const double end_cost =
+        with_end_rows ? end_weight * end_weight * end_gap(m, poses.back(), *p.opt.end).squaredNorm() : 0.0;
+    return r.squaredNorm() + end_cost;
+}
+
+double total_length(const CurvatureModel& m) {
+    double sum = 0.0;
+    for (double l : m.lengths) {
+        sum += l;
+    }
+    return sum;
+}
+
+void clamp_model(CurvatureModel& m, double min_length, double max_length) {
+    constexpr double max_curvature = 0.1;
+    for (std::size_t j = 0; j < m.segments(); ++j) {
+        if (m.length_free[j]) {
+            m.lengths[j] = std::clamp(m.lengths[j], min_length, std::max(min_length, max_length));
+        }
+    }
+    for (double& k : m.curv) {
+        k = std::clamp(k, -max_curvature, max_curvature);
+    }
+}
+
+} // namespace railodd::geometry::fit

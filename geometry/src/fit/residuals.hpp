@@ -1,0 +1,78 @@
+#pragma once
+// The residuals of a CurvatureModel against its data points, and their
+// Jacobian: feet of the points on the curve, normal distances, smoothness
+// rows, the end gap (least_squares.cpp runs Levenberg-Marquardt on them).
+#include "curvature_model.hpp"
+#include "least_squares.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+// Where a data point sits on the curve: segment, distance into it, and the
+// unit normal there. Residuals use the normal (and, at the two ends, the
+// tangent) fixed during one iteration, as in point-to-curve ICP.
+struct Foot {
+    std::size_t segment = 0;
+    double u = 0.0;
+    bool at_start = false; // the pinned first point: stays at arc length 0
+    bool at_end = false;   // the pinned last point: follows the end of its segment when lengths change
+    double nx = 0.0, ny = 0.0;
+    double tx = 0.0, ty = 0.0;
+    double cx = 0.0, cy = 0.0;
+};
+
+// The data and options of one solve.
+struct Problem {
+    const std::vector<Point2>& pts;
+    const SolveOptions& opt;
+};
+
+// Weight of the end-pose rows where the end cannot be an exact constraint:
+// the end is a link to another track, which must be met to far below a
+// millimetre.
+constexpr double end_weight = 1e5;
+
+// A model evaluated at its knots and at the feet of the points.
+struct Evaluated {
+    std::vector<Pose> knots;
+    std::vector<Pose> at_feet;
+};
+
+struct Linearisation {
+    Eigen::MatrixXd J; // data rows
+    Eigen::VectorXd r;
+    Eigen::MatrixXd C; // end gap rows, with an end pose
+    Eigen::VectorXd c;
+};
+
+// First feet of the points, in track order: each is searched along the curve
+// from the previous one's, where the chord between the two points leads.
+std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
+                          const SolveOptions& opt);
+
+// Residuals and Jacobian at the model, after moving the feet to the nearest
+// curve points. `known`, where given, is the model evaluated at the feet as
+// they stand (by the cost of the step that made it).
+Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, std::vector<Foot>& feet,
+                        const Evaluated* known);
+
+// Cost of a trial model with the feet (and their normals) of the current
+// linearisation held fixed, as in point-to-curve ICP; the next linearisation
+// moves the feet. With end_rows, the end pose's weighted rows count too.
+// The evaluation is kept in `e`: the next linearisation starts from it.
+double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows,
+                    Evaluated& e);
+
+double total_length(const CurvatureModel& m);
+
+// Keeps a trial model in the range the data can support: curvature at most
+// 0.1 1/m, every free length between min_length and max_length. Without the
+// upper bound a diverging step could make a segment kilometres long and
+// tightly curved, whose evaluation then takes minutes (seen on a replicated
+// Cologne extract).
+void clamp_model(CurvatureModel& m, double min_length, double max_length);
+
+} // namespace railodd::geometry::fit
