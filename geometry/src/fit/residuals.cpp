@@ -97,12 +97,7 @@ void refine_feet(const CurvatureModel& m, const std::vector<Pose>& poses, const 
             }
             f.u = std::clamp(u, 0.0, m.lengths[f.segment]);
         }
-        f.cx = c.x;
-        f.cy = c.y;
-        f.tx = std::cos(c.hdg);
-        f.ty = std::sin(c.hdg);
-        f.nx = -f.ty;
-        f.ny = f.tx;
+        f.place(c);
     }
 }
 
@@ -254,12 +249,7 @@ std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& pose
         f.at_end = last;
         f.at_start = first;
         const Pose c = evaluate(poses[f.segment], m.segment(f.segment), f.at_end ? m.lengths[f.segment] : f.u);
-        f.cx = c.x;
-        f.cy = c.y;
-        f.tx = std::cos(c.hdg);
-        f.ty = std::sin(c.hdg);
-        f.nx = -f.ty;
-        f.ny = f.tx;
+        f.place(c);
         feet.push_back(f);
     }
     return feet;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
 #include <vector>
 
 namespace railodd::geometry::fit {
@@ -22,6 +23,16 @@ struct Foot {
     double nx = 0.0, ny = 0.0;
     double tx = 0.0, ty = 0.0;
     double cx = 0.0, cy = 0.0;
+
+    // The curve point c is where the foot now is.
+    void place(const Pose& c) {
+        cx = c.x;
+        cy = c.y;
+        tx = std::cos(c.hdg);
+        ty = std::sin(c.hdg);
+        nx = -ty;
+        ny = tx;
+    }
 };
 
 // The data and options of one solve.
