@@ -61,8 +61,9 @@ struct FittedNetwork {
     // links included.
     std::vector<std::size_t> corner_chains;
     // Tied chain ends whose last ~40 m the corner construction rebuilt: the
-    // railway fit missed the tied pose (a weighted target at the end), or
-    // followed the nodes better with that end free (docs/geometry.md).
+    // railway fit missed the tied pose (no model of the last window could
+    // meet it as a constraint), or followed the nodes better with that end
+    // free (docs/geometry.md).
     std::size_t spliced_ends = 0;
 };
 
