@@ -258,6 +258,41 @@ TEST(FitAlignment, LongTrackIsFittedInWindowsWithoutJoints) {
     EXPECT_LT(fit.quality.rms_m, 0.4);
 }
 
+TEST(FitAlignment, ShortNoisyChordBesideALongOneDoesNotThrowTheStartOff) {
+    // Curve nodes every 15 m, the curve's last node 0.8 m to the side, then
+    // 250 m chords down a straight to a second curve; the start is tied, as
+    // every window's after the first. A curvature guess from the short
+    // chord alone, carried across the long interval beside it, once put the
+    // first estimate hundreds of metres off the second curve (seen on the
+    // sample route); the solve then settled on a wrong shape.
+    Alignment truth;
+    truth.start = {0, 0, 0.2, 0};
+    truth.primitives = {make_spiral(60, 0, 1.0 / 600), make_arc(400, 1.0 / 600), make_spiral(60, 1.0 / 600, 0),
+                        make_line(750), make_spiral(60, 0, -1.0 / 500), make_arc(500, -1.0 / 500),
+                        make_spiral(60, -1.0 / 500, 0), make_line(400)};
+    const IndexedAlignment t(truth);
+    std::vector<Point> pts;
+    auto node = [&](double s, double side) {
+        const Pose p = t.evaluate(s);
+        pts.push_back({p.x - side * std::sin(p.hdg), p.y + side * std::cos(p.hdg)});
+    };
+    for (double s = 0.0; s < 520.0; s += 15.0) {
+        node(s, 0.0);
+    }
+    node(520.0, -0.8);
+    node(770.0, 0.0);
+    node(1020.0, 0.0);
+    for (double s = 1270.0; s < 1900.0; s += 15.0) {
+        node(s, 0.0);
+    }
+    node(t.length(), 0.0);
+    const FitResult fit = fit_alignment(pts, t.evaluate(0), std::nullopt, {});
+    expect_g2(fit.alignment);
+    EXPECT_EQ(fit.quality.fallback_windows, 0u);
+    EXPECT_LT(fit.quality.max_m, 1.0); // the side-stepped node is 0.8 m off the truth
+    EXPECT_LT(interior_deviation(fit.alignment, truth, 50.0), 0.3);
+}
+
 TEST(FitAlignment, TwoPointsGiveALine) {
     const FitResult fit = fit_alignment({{0, 0}, {30, 40}}, std::nullopt, std::nullopt, {});
     ASSERT_EQ(fit.alignment.primitives.size(), 1u);

@@ -144,13 +144,23 @@ CurvatureModel fine_spline(const std::vector<Point2>& p, const WindowEnds& ends,
         knots = {0.0, std::max(t.back(), 1.0)};
     }
     add_turnout_knots(knots, ends.start.has_value(), ends.end.has_value(), o.knot_spacing_m);
+    // Each knot's curvature is the heading change across half of each
+    // neighbouring interval, at least a knot spacing. Where nodes are sparse
+    // a knot's curvature is carried (linearly fading) across the whole
+    // interval, so a difference over a few metres beside a long chord (one
+    // short, noisy chord's heading) would turn the curve by tenths of a
+    // radian there: hundreds of metres off by the window's end, too far for
+    // the solve to recover (seen on the sample route).
     const double h = o.knot_spacing_m;
-    auto curvature_at = [&](double s) { return (heading.at(s + h) - heading.at(s - h)) / (2 * h); };
+    auto curvature_at = [&](double s, double before, double after) {
+        const double back = std::max(h, 0.5 * before), ahead = std::max(h, 0.5 * after);
+        return (heading.at(s + ahead) - heading.at(s - back)) / (back + ahead);
+    };
     if (ends.start) {
         m.knot_var.push_back(-1);
         m.knot_fixed.push_back(ends.start->curvature);
     } else {
-        m.curv.push_back(curvature_at(0.0));
+        m.curv.push_back(curvature_at(0.0, 0.0, knots.size() > 1 ? knots[1] : 0.0));
         m.knot_var.push_back(0);
         m.knot_fixed.push_back(0.0);
     }
@@ -159,7 +169,8 @@ CurvatureModel fine_spline(const std::vector<Point2>& p, const WindowEnds& ends,
         if (k + 1 == knots.size() && ends.end) {
             m.push_segment(length, false, -1, ends.end->curvature);
         } else {
-            m.curv.push_back(curvature_at(knots[k]));
+            const double after = k + 1 < knots.size() ? knots[k + 1] - knots[k] : 0.0;
+            m.curv.push_back(curvature_at(knots[k], length, after));
             m.push_segment(length, false, static_cast<int>(m.curv.size() - 1));
         }
     }
