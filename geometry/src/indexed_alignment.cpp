@@ -52,6 +52,17 @@ IndexedAlignment::IndexedAlignment(Alignment alignment, double sample_step)
     }
     const Pose end = evaluate(length_);
     samples_.push_back({length_, end.x, end.y});
+    for (std::size_t first = 0; first < samples_.size(); first += block_size) {
+        const std::size_t last = std::min(samples_.size(), first + block_size);
+        Box b{samples_[first].x, samples_[first].y, samples_[first].x, samples_[first].y};
+        for (std::size_t i = first + 1; i < last; ++i) {
+            b.x0 = std::min(b.x0, samples_[i].x);
+            b.y0 = std::min(b.y0, samples_[i].y);
+            b.x1 = std::max(b.x1, samples_[i].x);
+            b.y1 = std::max(b.y1, samples_[i].y);
+        }
+        boxes_.push_back(b);
+    }
 }
 
 std::size_t IndexedAlignment::primitive_at(double s) const {
@@ -108,18 +119,55 @@ double IndexedAlignment::refine(double x, double y, double lo, double hi, double
     return s;
 }
 
-Projection IndexedAlignment::project_samples(double x, double y, std::size_t first, std::size_t last) const {
+std::size_t IndexedAlignment::nearest_sample(double x, double y, std::size_t first, std::size_t last) const {
+    // The nearest sample, the lowest index among equals: exactly what a scan
+    // of every sample finds, but whole blocks whose box lies farther than
+    // the best so far are skipped. The block nearest by its box is scanned
+    // first, so few others remain: the scan made measuring a long chain's
+    // fit quadratic in its length.
     std::size_t best = first;
     double best_d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t i = first; i <= last; ++i) {
-        const double dx = samples_[i].x - x;
-        const double dy = samples_[i].y - y;
-        const double d2 = dx * dx + dy * dy;
-        if (d2 < best_d2) {
-            best_d2 = d2;
-            best = i;
+    auto scan = [&](std::size_t from, std::size_t to) { // [from, to)
+        for (std::size_t i = from; i < to; ++i) {
+            const double dx = samples_[i].x - x;
+            const double dy = samples_[i].y - y;
+            const double d2 = dx * dx + dy * dy;
+            if (d2 < best_d2 || (d2 == best_d2 && i < best)) {
+                best_d2 = d2;
+                best = i;
+            }
+        }
+    };
+    auto box_d2 = [&](std::size_t b) {
+        const Box& q = boxes_[b];
+        const double dx = std::max({q.x0 - x, 0.0, x - q.x1});
+        const double dy = std::max({q.y0 - y, 0.0, y - q.y1});
+        return dx * dx + dy * dy;
+    };
+    const std::size_t b0 = first / block_size, b1 = last / block_size;
+    std::size_t seed = b0;
+    double seed_d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t b = b0; b <= b1; ++b) {
+        const double d2 = box_d2(b);
+        if (d2 < seed_d2) {
+            seed_d2 = d2;
+            seed = b;
         }
     }
+    auto scan_block = [&](std::size_t b) {
+        scan(std::max(first, b * block_size), std::min(last + 1, (b + 1) * block_size));
+    };
+    scan_block(seed);
+    for (std::size_t b = b0; b <= b1; ++b) {
+        if (b != seed && box_d2(b) <= best_d2) {
+            scan_block(b);
+        }
+    }
+    return best;
+}
+
+Projection IndexedAlignment::project_samples(double x, double y, std::size_t first, std::size_t last) const {
+    const std::size_t best = nearest_sample(x, y, first, last);
     const double lo = samples_[best == 0 ? 0 : best - 1].s;
     const double hi = samples_[std::min(best + 1, samples_.size() - 1)].s;
     const double s = refine(x, y, lo, hi, samples_[best].s);

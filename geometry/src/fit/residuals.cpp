@@ -151,11 +151,22 @@ void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
     }
 }
 
-Point2 rigid(const Point2& c, const Pose& from, const Pose& to) {
-    const double d = to.hdg - from.hdg;
-    const double dx = c.x - from.x, dy = c.y - from.y;
-    return {to.x + dx * std::cos(d) - dy * std::sin(d), to.y + dx * std::sin(d) + dy * std::cos(d)};
-}
+// The rigid motion taking pose `from` to pose `to`, applied to points: one
+// sincos per motion, not per point (a Jacobian column moves every point
+// downstream of its segment).
+class Rigid {
+public:
+    Rigid(const Pose& from, const Pose& to)
+        : from_(from), to_(to), c_(std::cos(to.hdg - from.hdg)), s_(std::sin(to.hdg - from.hdg)) {}
+    Point2 operator()(const Point2& p) const {
+        const double dx = p.x - from_.x, dy = p.y - from_.y;
+        return {to_.x + dx * c_ - dy * s_, to_.y + dx * s_ + dy * c_};
+    }
+
+private:
+    Pose from_, to_;
+    double c_, s_;
+};
 
 // The curve points and end pose of a model that differs from the current one
 // only in segments [a, b]: recomputed there, moved rigidly downstream.
@@ -166,11 +177,12 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
         // The start pose moves the whole curve rigidly: no evaluation needed.
         const Pose& from = poses.front();
         const Pose to{m2.start.x, m2.start.y, m2.start.hdg, from.curvature};
+        const Rigid move(from, to);
         for (std::size_t i = 0; i < feet.size(); ++i) {
-            out[i] = rigid(curve[i], from, to);
+            out[i] = move(curve[i]);
         }
         const Pose& e = poses.back();
-        const Point2 q = rigid({e.x, e.y}, from, to);
+        const Point2 q = move({e.x, e.y});
         end_out = {q.x, q.y, e.hdg + (to.hdg - from.hdg), e.curvature};
         return;
     }
@@ -178,6 +190,7 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
     for (std::size_t j = a; j <= b; ++j) {
         p2[j + 1] = evaluate(p2[j], m2.segment(j), m2.lengths[j]);
     }
+    const Rigid downstream(poses[b + 1], p2[b + 1]);
     for (std::size_t i = 0; i < feet.size(); ++i) {
         const Foot& f = feet[i];
         if (f.segment < a) {
@@ -186,14 +199,14 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
             const Pose c = evaluate(p2[f.segment], m2.segment(f.segment), f.at_end ? m2.lengths[f.segment] : f.u);
             out[i] = {c.x, c.y};
         } else {
-            out[i] = rigid(curve[i], poses[b + 1], p2[b + 1]);
+            out[i] = downstream(curve[i]);
         }
     }
     const Pose& e = poses.back();
     if (b + 1 == poses.size() - 1) {
         end_out = p2.back();
     } else {
-        const Point2 q = rigid({e.x, e.y}, poses[b + 1], p2[b + 1]);
+        const Point2 q = downstream({e.x, e.y});
         end_out = {q.x, q.y, e.hdg + (p2[b + 1].hdg - poses[b + 1].hdg), e.curvature};
     }
 }

@@ -36,7 +36,14 @@ private:
         double y;
     };
 
+    // Bounding box of block_size consecutive samples.
+    struct Box {
+        double x0, y0, x1, y1;
+    };
+    static constexpr std::size_t block_size = 32;
+
     std::size_t primitive_at(double s) const;
+    std::size_t nearest_sample(double x, double y, std::size_t first, std::size_t last) const;
     double refine(double x, double y, double lo, double hi, double guess) const;
     Projection project_samples(double x, double y, std::size_t first, std::size_t last) const;
 
@@ -45,6 +52,7 @@ private:
     std::vector<double> s_starts_;
     double length_ = 0.0;
     std::vector<Sample> samples_;
+    std::vector<Box> boxes_;
 };
 
 } // namespace railodd::geometry
