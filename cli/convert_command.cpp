@@ -277,9 +277,13 @@ int ConvertCommand::run() {
     stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out); });
     stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
     stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
-    stage.write_text("ingest.geojson", ingest::to_geojson(result));
-    stage.write_text("geometry.geojson", geometry::to_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track"));
-    stage.write_text("roads.geojson", geometry::to_geojson(geo.roads, geo.fitted_roads, result.projection, "road"));
+    stage.write_with("ingest.geojson", [&](std::ostream& out) { ingest::write_geojson(result, out); });
+    stage.write_with("geometry.geojson", [&](std::ostream& out) {
+        geometry::write_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track", out);
+    });
+    stage.write_with("roads.geojson", [&](std::ostream& out) {
+        geometry::write_geojson(geo.roads, geo.fitted_roads, result.projection, "road", out);
+    });
     geojson_written.get();
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());

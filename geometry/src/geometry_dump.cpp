@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
+#include <sstream>
 
 namespace railodd::geometry {
 
@@ -131,13 +133,15 @@ void append_samples(std::string& out, const Alignment& a, const ingest::LocalPro
 
 } // namespace
 
-std::string to_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& proj,
-                       const char* layer) {
-    std::string out = "{\"type\":\"FeatureCollection\",\"features\":[\n";
+void write_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& proj,
+                   const char* layer, std::ostream& os) {
+    // Printed feature by feature: a network's dump is never whole in memory.
+    os << "{\"type\":\"FeatureCollection\",\"features\":[\n";
+    std::string out;
     for (std::size_t i = 0; i < net.edges.size(); ++i) {
         const FittedEdge& f = net.edges[i];
         const GraphEdge& e = graph.edges[f.edge];
-        out += i ? ",\n" : "";
+        out = i ? ",\n" : "";
         out += "{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":[";
         append_samples(out, f.alignment, proj);
         out += "]},\"properties\":{\"layer\":\"";
@@ -159,9 +163,16 @@ std::string to_geojson(const TrackGraph& graph, const FittedNetwork& net, const 
         out += ",\"max_m\":";
         append_json_number(out, std::round(f.quality.max_m * 1e4) / 1e4);
         out += "}}";
+        os << out;
     }
-    out += "\n]}\n";
-    return out;
+    os << "\n]}\n";
+}
+
+std::string to_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& proj,
+                       const char* layer) {
+    std::ostringstream os;
+    write_geojson(graph, net, proj, layer, os);
+    return os.str();
 }
 
 } // namespace railodd::geometry

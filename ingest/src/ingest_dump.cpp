@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <map>
+#include <ostream>
+#include <sstream>
 
 namespace railodd::ingest {
 
@@ -184,12 +186,16 @@ ordered_json report_sections(const IngestResult& r) {
     return j;
 }
 
-std::string to_geojson(const IngestResult& r) {
+void write_geojson(const IngestResult& r, std::ostream& os) {
     // One feature per line: diffable, and streamable by line-oriented tools.
-    std::string out = "{\"type\":\"FeatureCollection\",\"features\":[\n";
+    // Each is printed as it is made: a large input's dump is never whole in
+    // memory.
+    os << "{\"type\":\"FeatureCollection\",\"features\":[\n";
+    std::string out;
     const char* sep = "";
     auto next = [&] {
-        out += sep;
+        os << out;
+        out = sep;
         sep = ",\n";
     };
     for (const auto& t : r.tracks) {
@@ -208,8 +214,13 @@ std::string to_geojson(const IngestResult& r) {
         next();
         append_land_use(out, a, r.projection);
     }
-    out += "\n]}\n";
-    return out;
+    os << out << "\n]}\n";
+}
+
+std::string to_geojson(const IngestResult& r) {
+    std::ostringstream os;
+    write_geojson(r, os);
+    return os.str();
 }
 
 } // namespace railodd::ingest

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace railodd::odd {
 
@@ -69,6 +70,37 @@ std::vector<std::string> TagContext::way_ids(std::size_t edge, double s0, double
         }
     }
     return ids;
+}
+
+void TagContext::sort_elements() {
+    auto& elements = out_.elements;
+    std::vector<std::size_t> order(elements.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        const TaggedElement& x = elements[a];
+        const TaggedElement& y = elements[b];
+        return std::tie(x.track, x.chainage_start, x.element, x.chainage_end, a) <
+               std::tie(y.track, y.chainage_start, y.element, y.chainage_end, b);
+    });
+    // The permutation applied in place, cycle by cycle: no second copy of the
+    // elements and no merge buffer, as std::stable_sort would take.
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (order[i] == i) {
+            continue;
+        }
+        TaggedElement held = std::move(elements[i]);
+        std::size_t at = i;
+        while (order[at] != i) {
+            const std::size_t from = order[at];
+            elements[at] = std::move(elements[from]);
+            order[at] = at;
+            at = from;
+        }
+        elements[at] = std::move(held);
+        order[at] = at;
+    }
 }
 
 void TagContext::unparsed(std::vector<std::string> osm_ids, const std::string& tag, const std::string& value,

@@ -42,6 +42,10 @@ public:
     // OSM ids of the ways covering [s0, s1] of an edge.
     std::vector<std::string> way_ids(std::size_t edge, double s0, double s1);
 
+    // Puts the profile's elements in order: by track, chainage, element path
+    // and end chainage, equal keys in tagging order.
+    void sort_elements();
+
 private:
     const TaggerInput& in_;
     const Taxonomy& taxonomy_;

@@ -49,10 +49,7 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
     tag_features(ctx);
     tag_surroundings(ctx);
     tag_land_use(ctx);
-    std::stable_sort(p.elements.begin(), p.elements.end(), [](const TaggedElement& a, const TaggedElement& b) {
-        return std::tie(a.track, a.chainage_start, a.element, a.chainage_end) <
-               std::tie(b.track, b.chainage_start, b.element, b.chainage_end);
-    });
+    ctx.sort_elements();
     p.summary = summarize(p, &taxonomy);
     return p;
 }

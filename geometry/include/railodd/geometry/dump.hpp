@@ -7,12 +7,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <ostream>
 #include <string>
 
 namespace railodd::geometry {
 
 nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net);
 
+void write_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
+                   const char* layer, std::ostream& out);
 std::string to_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
                        const char* layer);
 

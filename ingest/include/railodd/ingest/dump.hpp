@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <ostream>
 #include <string>
 
 namespace railodd::ingest {
@@ -12,6 +13,7 @@ namespace railodd::ingest {
 nlohmann::ordered_json report_sections(const IngestResult& result);
 
 // Tracks, roads and features in WGS84, one GeoJSON Feature each with its OSM id and tags.
+void write_geojson(const IngestResult& result, std::ostream& out);
 std::string to_geojson(const IngestResult& result);
 
 } // namespace railodd::ingest

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <iosfwd>
+#include <deque>
 #include <string>
 #include <variant>
 #include <vector>
@@ -66,7 +67,10 @@ struct OddProfile {
     std::string route;     // description of the route / selection
     double length_m = 0.0; // of all tracks (or the route)
     std::size_t tracks = 0;
-    std::vector<TaggedElement> elements; // by track, then chainage, then element path
+    // By track, then chainage, then element path. A deque: a network's
+    // elements are its largest structure, and a vector's doubling would hold
+    // them twice at once.
+    std::deque<TaggedElement> elements;
     std::vector<Unparsed> unparsed;
     nlohmann::ordered_json summary;      // km per radius / gradient class, counts, speed profile
     bool along_route = false; // chainage runs along one route (--from/--to, --relation), not per track
