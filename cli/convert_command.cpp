@@ -260,7 +260,7 @@ int ConvertCommand::run() {
     timer.start("odd_tagging");
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
     odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
-    odd::add_odd_user_data(profile, map.map);
+    const odd::OddUserData odd_user_data(profile); // written with each road
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, profile);
 
     // Phase 5: stage every output, then move them into place together. The
@@ -274,7 +274,7 @@ int ConvertCommand::run() {
         std::async(opt_.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
             stage.write_with("odd_profile.geojson", [&](std::ostream& out) { odd::write_geojson(profile, out); });
         });
-    stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out); });
+    stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out, odd_user_data); });
     stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
     stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
     stage.write_with("ingest.geojson", [&](std::ostream& out) { ingest::write_geojson(result, out); });

@@ -54,26 +54,46 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
     return p;
 }
 
-void add_odd_user_data(const OddProfile& profile, xodr::Map& map) {
-    std::map<std::string, xodr::Road*> roads;
-    for (auto& r : map.roads) {
-        roads[r.id] = &r;
+namespace {
+
+std::string user_data_text(const TaggedElement& t) {
+    std::ostringstream v;
+    v.precision(8);
+    v << t.element_id << " s=" << t.s_start;
+    if (!t.point) {
+        v << '-' << t.s_end;
     }
-    for (const auto& t : profile.elements) {
-        const auto it = roads.find(t.road_id);
-        if (it == roads.end()) {
-            continue;
+    for (const auto& a : t.attributes) {
+        v << ' ' << a.name << '=' << text_of(a.value);
+    }
+    return v.str();
+}
+
+} // namespace
+
+OddUserData::OddUserData(const OddProfile& profile) : profile_(profile) {
+    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
+        by_road_[profile.elements[i].road_id].push_back(i);
+    }
+}
+
+std::vector<xodr::UserData> OddUserData::operator()(const xodr::Road& road) const {
+    std::vector<xodr::UserData> out;
+    const auto it = by_road_.find(road.id);
+    if (it != by_road_.end()) {
+        for (std::size_t i : it->second) {
+            out.push_back({"odd", user_data_text(profile_.elements[i])});
         }
-        std::ostringstream v;
-        v.precision(8);
-        v << t.element_id << " s=" << t.s_start;
-        if (!t.point) {
-            v << '-' << t.s_end;
+    }
+    return out;
+}
+
+void add_odd_user_data(const OddProfile& profile, xodr::Map& map) {
+    const OddUserData odd(profile);
+    for (auto& r : map.roads) {
+        for (auto& u : odd(r)) {
+            r.user_data.push_back(std::move(u));
         }
-        for (const auto& a : t.attributes) {
-            v << ' ' << a.name << '=' << text_of(a.value);
-        }
-        it->second->user_data.push_back({"odd", v.str()});
     }
 }
 

@@ -146,7 +146,7 @@ void write_lanes(pugi::xml_node road, const Road& r) {
 
 namespace {
 
-void write_road(pugi::xml_node root, const Road& r, Revision revision) {
+void write_road(pugi::xml_node root, const Road& r, Revision revision, const ExtraUserData& extra) {
     pugi::xml_node road = root.append_child("road");
     attr(road, "name", r.name);
     attr(road, "length", r.length());
@@ -168,6 +168,9 @@ void write_road(pugi::xml_node root, const Road& r, Revision revision) {
     xml::write_signals(road, r, revision);
     xml::write_railroad(road, r);
     user_data(road, r.user_data);
+    if (extra) {
+        user_data(road, extra(r));
+    }
 }
 
 void write_header(pugi::xml_node root, const Header& h, Revision revision) {
@@ -206,11 +209,11 @@ void write_element(std::ostream& out, Build build) {
 
 } // namespace
 
-void write_xodr(const Map& map, Revision revision, std::ostream& out) {
+void write_xodr(const Map& map, Revision revision, std::ostream& out, const ExtraUserData& extra) {
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<OpenDRIVE>\n";
     write_element(out, [&](pugi::xml_node root) { write_header(root, map.header, revision); });
     for (const auto& r : map.roads) {
-        write_element(out, [&](pugi::xml_node root) { write_road(root, r, revision); });
+        write_element(out, [&](pugi::xml_node root) { write_road(root, r, revision, extra); });
     }
     for (const auto& j : map.junctions) {
         write_element(out, [&](pugi::xml_node root) { xml::write_junction(root, j, revision); });

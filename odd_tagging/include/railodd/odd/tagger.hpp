@@ -7,6 +7,10 @@
 #include "railodd/odd/taxonomy.hpp"
 #include "railodd/xodr/map_builder.hpp"
 
+#include <map>
+#include <string>
+#include <vector>
+
 namespace railodd::odd {
 
 struct TaggerInput {
@@ -19,5 +23,18 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy);
 // The tags as <userData code="odd"> on the roads they belong to, one per
 // element: "ID s=START-END name=value ...".
 void add_odd_user_data(const OddProfile& profile, xodr::Map& map);
+
+// The same entries for one road at a time, made as the map is written
+// (xodr::write_xodr's extra user data): on a large network they are as many
+// as the elements, and need not be held twice.
+class OddUserData {
+public:
+    explicit OddUserData(const OddProfile& profile);
+    std::vector<xodr::UserData> operator()(const xodr::Road& road) const;
+
+private:
+    const OddProfile& profile_;
+    std::map<std::string, std::vector<std::size_t>> by_road_; // element indices, in profile order
+};
 
 } // namespace railodd::odd
