@@ -208,14 +208,15 @@ Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::stri
 // else with --relation, along the relation's member ways (the map stays the
 // whole selection); the route for report.json.
 std::optional<odd::Route> route_profile(const ConvertOptions& o, const ingest::IngestResult& r, const Geometry& g,
-                                        const odd::Taxonomy& taxonomy, odd::OddProfile& profile) {
+                                        const odd::Taxonomy& taxonomy, const odd::OddProfile& network,
+                                        odd::OddProfile& along) {
     if (o.from.empty() && !r.relation) {
         return std::nullopt;
     }
     odd::Route route = o.from.empty()
                            ? odd::relation_route(g.tracks, g.fitted_tracks, r.tracks, *r.relation, r.source)
                            : odd::find_route(g.tracks, g.fitted_tracks, g.attachment, r.features, o.from, o.to);
-    profile = odd::along_route(profile, route, taxonomy);
+    along = odd::along_route(network, route, taxonomy);
     return route;
 }
 
@@ -259,9 +260,11 @@ int ConvertCommand::run() {
     // into the map's <userData>.
     timer.start("odd_tagging");
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
-    odd::OddProfile profile = odd::tag_route({map_input, map}, taxonomy);
-    const odd::OddUserData odd_user_data(profile); // written with each road
-    const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, profile);
+    const odd::OddProfile network = odd::tag_route({map_input, map}, taxonomy);
+    const odd::OddUserData odd_user_data(network); // the whole network's, written with each road
+    odd::OddProfile along;
+    const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
+    const odd::OddProfile& profile = route ? along : network;
 
     // Phase 5: stage every output, then move them into place together. The
     // large ones are streamed: no output is ever held whole in memory.

@@ -248,6 +248,20 @@ TEST(OddRoute, ConvertFromToWritesTheRoute) {
         EXPECT_GE(e["chainage_start"].get<double>(), -1e-6) << e.dump();
         EXPECT_LE(e["chainage_end"].get<double>(), length + 1e-6) << e.dump();
     }
+    // The map is the whole selection, and so are the ODD tags on its roads:
+    // the route narrows only the profile.
+    const auto whole = run_command(convert + quoted(dir / "whole"));
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+    auto odd_entries = [](const std::string& xodr) {
+        std::size_t n = 0;
+        for (auto at = xodr.find("code=\"odd\""); at != std::string::npos; at = xodr.find("code=\"odd\"", at + 1)) {
+            ++n;
+        }
+        return n;
+    };
+    const std::string route_map = read_file(dir / "out" / "map.xodr");
+    EXPECT_GT(odd_entries(route_map), profile["elements"].size());
+    EXPECT_EQ(route_map, read_file(dir / "whole" / "map.xodr"));
     const auto half = run_command(convert + quoted(dir / "half") + " --from Sampleton");
     EXPECT_EQ(half.exit_code, exit_usage) << half.output;
     const auto unknown = run_command(convert + quoted(dir / "unknown") + " --from Sampleton --to Atlantis");
