@@ -60,7 +60,13 @@ std::optional<RawLandUseWay> land_use_way(const osmium::Way& way, const std::vec
 } // namespace
 
 WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members,
-                        std::size_t road_refs_cap, const LandUseWanted& land_use) {
+                        std::size_t road_refs_cap, const LandUseWanted& land_use,
+                        const std::vector<std::int64_t>* near) {
+    auto touches = [&](const osmium::Way& way) {
+        return !near || std::any_of(way.nodes().begin(), way.nodes().end(), [&](const osmium::NodeRef& nr) {
+                   return std::binary_search(near->begin(), near->end(), nr.ref());
+               });
+    };
     WayScan scan;
     scan.roads_complete = road_refs_cap > 0;
     scan.land_use_complete = land_use.refs_cap > 0;
@@ -68,10 +74,10 @@ WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std
     scan_osm(file, bits::way, "reading ways", [&](const osmium::OSMObject& obj) {
         const auto& way = static_cast<const osmium::Way&>(obj);
         if (is_track(way.tags())) {
-            if (!members || std::binary_search(members->begin(), members->end(), way.id())) {
+            if ((!members || std::binary_search(members->begin(), members->end(), way.id())) && touches(way)) {
                 scan.tracks.push_back({way.id(), to_tags(way.tags()), refs_of(way)});
             }
-        } else if (auto kind = area_feature_kind(way.tags())) {
+        } else if (auto kind = area_feature_kind(way.tags()); kind && touches(way)) {
             RawFeature f;
             f.osm_type = "way";
             f.id = way.id();
@@ -120,7 +126,20 @@ std::vector<RawLandUseWay> scan_land_use_ways(const std::filesystem::path& file,
     return out;
 }
 
-NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted) {
+std::vector<std::int64_t> node_ids_in(const std::filesystem::path& file, const BBox& box) {
+    std::vector<std::int64_t> ids;
+    scan_osm(file, bits::node, "reading nodes in the selection", [&](const osmium::OSMObject& obj) {
+        const auto& node = static_cast<const osmium::Node&>(obj);
+        if (node.location().valid() && box.contains({node.location().lon(), node.location().lat()})) {
+            ids.push_back(node.id());
+        }
+    });
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return ids;
+}
+
+NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted, const BBox* feature_box) {
     NodeScan scan;
     scan_osm(file, bits::node, "reading nodes", [&](const osmium::OSMObject& obj) {
         const auto& node = static_cast<const osmium::Node&>(obj);
@@ -129,10 +148,14 @@ NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted) {
             return; // deleted or location-less nodes count as missing
         }
         const LonLat ll{node.location().lon(), node.location().lat()};
-        if (auto* e = wanted.find(node.id())) {
+        auto* e = wanted.find(node.id());
+        if (e) {
             e->lonlat = ll;
             e->ele = ele_of(node.tags());
             e->present = true;
+        }
+        if (!e && feature_box && !feature_box->contains(ll)) {
+            return; // off every way read, and far from the selection
         }
         if (auto kind = point_feature_kind(node.tags())) {
             RawFeature f;

@@ -2,6 +2,7 @@
 // The individual streaming passes of the OSM reader. Each reads one kind of
 // object and keeps only what the selection needs.
 #include "node_locations.hpp"
+#include "railodd/ingest/selection.hpp"
 #include "railodd/ingest/types.hpp"
 
 #include <cstdint>
@@ -55,8 +56,14 @@ struct WayScan {
 // ways are kept too while all of them together reference at most
 // `road_refs_cap` nodes, which saves three passes on all but very large files;
 // land-use ways likewise within `land_use.refs_cap`.
+// With `near` (sorted node ids), track and platform / station ways only where
+// they reference one of those nodes.
 WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std::int64_t>* members,
-                        std::size_t road_refs_cap, const LandUseWanted& land_use);
+                        std::size_t road_refs_cap, const LandUseWanted& land_use,
+                        const std::vector<std::int64_t>* near = nullptr);
+
+// Sorted ids of the nodes located in `box`.
+std::vector<std::int64_t> node_ids_in(const std::filesystem::path& file, const BBox& box);
 
 // Land-use ways with at least one node located in `near`.
 std::vector<RawLandUseWay> scan_land_use_ways(const std::filesystem::path& file,
@@ -67,8 +74,9 @@ struct NodeScan {
     std::vector<RawFeature> point_features;
 };
 
-// Locates every wanted node and collects railway point feature nodes.
-NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted);
+// Locates every wanted node and collects railway point feature nodes (only
+// those in `feature_box`, if given).
+NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted, const BBox* feature_box = nullptr);
 
 // Locates the wanted nodes only.
 void locate_nodes(const std::filesystem::path& file, NodeLocations& wanted, const std::string& pass);

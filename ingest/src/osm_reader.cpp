@@ -15,12 +15,33 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <vector>
 
 namespace railodd::ingest {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+// Beyond the selection's bounds, the box whose nodes may matter: a selected
+// way is kept whole and may run out of the selection, and features count up
+// to station_distance_m from a track. Ways that reach into the box are read,
+// point features off them only inside it.
+constexpr double selection_margin_m = 2000.0;
+
+BBox selection_box(const Selection& sel, const IngestOptions& o) {
+    BBox b = sel.bbox.value_or(sel.polygon ? sel.polygon->bounds : BBox{-180, -90, 180, 90});
+    if (sel.bbox && sel.polygon) {
+        b = {std::max(b.west, sel.polygon->bounds.west), std::max(b.south, sel.polygon->bounds.south),
+             std::min(b.east, sel.polygon->bounds.east), std::min(b.north, sel.polygon->bounds.north)};
+    }
+    const double m = selection_margin_m + std::max({o.feature_distance_m, o.station_distance_m, 0.0});
+    const double dlat = m / 111000.0;
+    const double max_lat = std::min(89.0, std::max(std::abs(b.south), std::abs(b.north)) + dlat);
+    const double dlon = m / (111000.0 * std::cos(max_lat * 3.14159265358979323846 / 180.0));
+    return {b.west - dlon, b.south - dlat, b.east + dlon, b.north + dlat};
+}
 
 bool any_node_selected(const Way& way, const Selection& sel) {
     for (const auto& part : way.parts) {
@@ -105,11 +126,25 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
         result.relation = relations.route;
     }
 
-    // Phase 2: track, platform, station and land-use ways; only their node ids are known yet.
+    // Phase 2: with a bounding box or polygon, the nodes in and near it
+    // first, so that only the ways reaching them are held: memory follows the
+    // selection, not the file (a track way none of whose nodes is in the
+    // file lies in no selection, and is accounted only without one).
+    std::optional<BBox> near_box;
+    std::vector<std::int64_t> near_nodes;
+    if (sel.spatial()) {
+        timer.start("read_selected_nodes");
+        near_box = selection_box(sel, options);
+        near_nodes = node_ids_in(file, *near_box);
+    }
+
+    // Phase 3: track, platform, station and land-use ways; only their node ids are known yet.
     timer.start("read_ways");
     const std::size_t road_refs_cap = options.road_corridor_m > 0 ? options.road_prefetch_refs : 0;
     const LandUseWanted land_use{relations.land_use_members, options.land_use ? options.land_use_prefetch_refs : 0};
-    WayScan ways = scan_track_ways(file, sel.relation ? &relations.route_ways : nullptr, road_refs_cap, land_use);
+    WayScan ways = scan_track_ways(file, sel.relation ? &relations.route_ways : nullptr, road_refs_cap, land_use,
+                                   near_box ? &near_nodes : nullptr);
+    std::vector<std::int64_t>().swap(near_nodes);
     NodeLocations locs;
     for (const auto& w : ways.tracks) {
         locs.want_all(w.refs);
@@ -125,12 +160,12 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     }
     locs.seal();
 
-    // Phase 3: locations of exactly those nodes, and railway point features.
+    // Phase 4: locations of exactly those nodes, and railway point features.
     timer.start("read_nodes");
-    NodeScan nodes = scan_nodes(file, locs);
+    NodeScan nodes = scan_nodes(file, locs, near_box ? &*near_box : nullptr);
     result.counts.input_nodes = nodes.node_count;
 
-    // Phase 4: the selection, the local frame and the track geometry in it.
+    // Phase 5: the selection, the local frame and the track geometry in it.
     timer.start("select_and_project");
     select_tracks(ways.tracks, locs, sel, result);
     if (result.tracks.empty() && sel.relation) {
@@ -149,12 +184,12 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     // Cells small against the corridor: queries stop at the first segment in reach.
     const SegmentGrid grid = track_grid(result.tracks, 50.0);
 
-    // Phase 5: features on or near the selected tracks.
+    // Phase 6: features on or near the selected tracks.
     timer.start("select_features");
     FeatureContext ctx{sel, options, grid, result.projection, sorted_track_node_ids(result.tracks)};
     select_features(std::move(nodes.point_features), std::move(ways.area_features), locs, ctx, result);
 
-    // Phase 6: land-use areas that may hold a track.
+    // Phase 7: land-use areas that may hold a track.
     if (options.land_use) {
         timer.start("read_land_use");
         const LandUseContext lc{file, lonlat_bounds(result.tracks, 0.0),
@@ -166,7 +201,7 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
         }
     }
 
-    // Phase 7: roads in the corridor around the tracks.
+    // Phase 8: roads in the corridor around the tracks.
     if (options.road_corridor_m > 0) {
         timer.start("read_roads");
         RoadContext rc{file, options.road_corridor_m, grid, lonlat_bounds(result.tracks, options.road_corridor_m)};
