@@ -255,6 +255,7 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     const fit::SolveReport fine_report = fit::solve(fine, p, so);
     so.kink_sigma = 0.0;
     so.ridge_sigma = 0.0;
+    so.geodesic_acceleration = true;
 
     std::vector<double> ks, kk;
     double s = 0.0;

@@ -125,7 +125,7 @@ private:
             // Away from the end pose, steps aim at a shrinking share of the
             // gap until one closes part of it.
             const double share = on_end_ ? 1.0 : std::pow(0.5, tries);
-            std::optional<Trial> t = mode_ == EndMode::exact ? exact_trial(ldlt, g, lin, share) : free_trial(ldlt, g);
+            std::optional<Trial> t = mode_ == EndMode::exact ? exact_trial(ldlt, g, lin, share) : free_trial(ldlt, g, lin);
             if (!t) {
                 mode_ = EndMode::weighted; // this model cannot meet the end exactly
                 return Outcome::fell_back;
@@ -161,10 +161,36 @@ private:
         mu_ = std::max(mu_ / 3, 1e-9);
     }
 
-    std::optional<Trial> free_trial(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g) const {
+    std::optional<Trial> free_trial(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
+                                    const Linearisation& lin) const {
+        const Eigen::VectorXd x = to_eigen(map_.get(model_));
+        const Eigen::VectorXd v = A.solve(-g);
         Trial t{model_, 0.0};
-        apply(t.model, to_eigen(map_.get(model_)) + A.solve(-g));
+        apply(t.model, x + v + 0.5 * acceleration(A, lin, x, v));
         return t;
+    }
+
+    // Geodesic acceleration (Transtrum and Sethna): the second directional
+    // derivative of the residuals along the step bends it along the curved
+    // valleys that otherwise hold LM to small steps. Zero where it would
+    // dominate the step.
+    Eigen::VectorXd acceleration(const Eigen::LDLT<Eigen::MatrixXd>& A, const Linearisation& lin,
+                                 const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+        if (!p_.opt.geodesic_acceleration) {
+            return Eigen::VectorXd::Zero(v.size());
+        }
+        const double h = 0.1;
+        CurvatureModel probe = model_;
+        apply(probe, x + h * v);
+        const Eigen::VectorXd r2 = residuals_at_feet(probe, p_, feet_, mode_ == EndMode::weighted);
+        if (r2.size() != lin.r.size()) {
+            return Eigen::VectorXd::Zero(v.size());
+        }
+        const Eigen::VectorXd rvv = (2.0 / h) * ((r2 - lin.r) / h - lin.J * v);
+        const Eigen::VectorXd a = -A.solve(lin.J.transpose() * rvv);
+        const Eigen::VectorXd scale = (lin.J.colwise().squaredNorm().array() + 1e-12).sqrt().matrix().transpose();
+        const double ratio = a.cwiseProduct(scale).norm() / std::max(v.cwiseProduct(scale).norm(), 1e-300);
+        return 2.0 * ratio <= 0.75 ? a : Eigen::VectorXd::Zero(v.size());
     }
 
     // The constrained step (closing `share` of the end gap), then on towards

@@ -24,6 +24,11 @@ struct SolveOptions {
     bool pin_first = true;          // the first point marks the curve's start (along-track residual too)
     bool pin_last = true;           // the last point marks its end
     std::optional<Pose> end;        // end pose (x, y, hdg, curvature) to reach
+    // Bend free steps along curved cost valleys (second-order correction):
+    // structure fits, whose segment lengths couple with their curvatures,
+    // converge in fewer iterations; the regularised fine spline does not
+    // need it.
+    bool geodesic_acceleration = false;
     // Sum of squared distances (m^2) above which the caller rejects the fit
     // anyway: the solve stops once its progress cannot bring it below.
     double give_up_rss = std::numeric_limits<double>::infinity();

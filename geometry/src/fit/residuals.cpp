@@ -306,8 +306,12 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
     return lin;
 }
 
-double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows,
-                    Evaluated& e) {
+namespace {
+
+// The data rows (and, with end rows, the end gap) of a model evaluated at
+// fixed feet; the evaluation is kept in `e`.
+Eigen::VectorXd rows_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet,
+                             bool with_end_rows, Evaluated& e, Eigen::VectorXd& gap) {
     e.knots = m.knot_poses();
     const std::vector<Pose>& poses = e.knots;
     e.at_feet.resize(feet.size());
@@ -320,9 +324,32 @@ double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector
     }
     Eigen::VectorXd r(static_cast<long>(row_count(m, p)));
     fill_residuals(m, feet, curve, p, r);
-    const double end_cost =
-        with_end_rows ? end_weight * end_weight * end_gap(m, poses.back(), *p.opt.end).squaredNorm() : 0.0;
-    return r.squaredNorm() + end_cost;
+    if (with_end_rows) {
+        gap = end_gap(m, poses.back(), *p.opt.end);
+    }
+    return r;
+}
+
+} // namespace
+
+double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows,
+                    Evaluated& e) {
+    Eigen::VectorXd gap;
+    const Eigen::VectorXd r = rows_at_feet(m, p, feet, with_end_rows, e, gap);
+    return r.squaredNorm() + (with_end_rows ? end_weight * end_weight * gap.squaredNorm() : 0.0);
+}
+
+Eigen::VectorXd residuals_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet,
+                                  bool with_end_rows) {
+    Evaluated e;
+    Eigen::VectorXd gap;
+    const Eigen::VectorXd r = rows_at_feet(m, p, feet, with_end_rows, e, gap);
+    if (!with_end_rows) {
+        return r;
+    }
+    Eigen::VectorXd out(r.size() + gap.size());
+    out << r, end_weight * gap;
+    return out;
 }
 
 double total_length(const CurvatureModel& m) {

@@ -77,6 +77,10 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
 double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet, bool with_end_rows,
                     Evaluated& e);
 
+// The residual vector whose squared norm cost_at_feet returns.
+Eigen::VectorXd residuals_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet,
+                                  bool with_end_rows);
+
 double total_length(const CurvatureModel& m);
 
 // Keeps a trial model in the range the data can support: curvature at most
