@@ -119,6 +119,49 @@ TEST(OddProfileIo, GeoJsonHasPointsLinesAndLonLatOrder) {
     EXPECT_TRUE(nlohmann::json::parse(to_geojson(p))["features"][0]["geometry"].is_null());
 }
 
+// Each feature line is printed directly, not through json objects: it must be
+// the bytes nlohmann's dump() gives for the same feature, escapes, UTF-8,
+// number forms and a repeated attribute name (first place, last value)
+// included.
+TEST(OddProfileIo, GeoJsonFeatureLinesAreCompactJsonDumps) {
+    OddProfile p = sample_profile();
+    p.elements.resize(2);
+    TaggedElement& e = p.elements[1];
+    e.attributes = {{"name", std::string{"K\xc3\xb6ln \"Hbf\"\\ \t\x01"}}, {"radius", 1e-5}, {"big", 1.5e300},
+                    {"name", std::string{"Deutz"}}, {"flag", true}, {"zero", -0.0}};
+    e.osm_ids = {"way:1", "node:\xe2\x82\xac"};
+    e.s_end = 123456789.125;
+    e.track = 18446744073709551615ULL;
+    e.lonlat = {{-0.000000049, 89.99999999}, {179.9999999, -12.5}};
+    nlohmann::ordered_json attrs = nlohmann::ordered_json::object();
+    for (const auto& a : e.attributes) {
+        attrs[a.name] = std::visit([](const auto& v) { return nlohmann::ordered_json(v); }, a.value);
+    }
+    nlohmann::ordered_json props;
+    props["odd_element"] = e.element;
+    props["element_id"] = e.element_id;
+    props["attributes"] = attrs;
+    props["road_id"] = e.road_id;
+    props["track"] = e.track;
+    props["s_start"] = e.s_start;
+    props["s_end"] = e.s_end;
+    props["chainage_start"] = e.chainage_start;
+    props["chainage_end"] = e.chainage_end;
+    props["osm_ids"] = e.osm_ids;
+    props["source"] = e.source;
+    const nlohmann::ordered_json geometry = {
+        {"type", "LineString"},
+        {"coordinates", {{std::round(-0.000000049 * 1e7) / 1e7, std::round(89.99999999 * 1e7) / 1e7},
+                         {std::round(179.9999999 * 1e7) / 1e7, -12.5}}}};
+    const nlohmann::ordered_json feature = {{"type", "Feature"}, {"geometry", geometry}, {"properties", props}};
+    const std::string text = to_geojson(p);
+    const std::string expected = feature.dump();
+    EXPECT_NE(text.find("\n" + expected + "\n]}"), std::string::npos) << text;
+    EXPECT_NE(expected.find(R"("name":"Deutz")"), std::string::npos) << expected;
+    e.osm_ids = {std::string{"way:\xff"}}; // not UTF-8: refused as dump() refuses it
+    EXPECT_THROW(to_geojson(p), nlohmann::json::type_error);
+}
+
 TEST(OddProfileIo, CsvQuotesCommasAndQuotes) {
     OddProfile p = sample_profile();
     p.elements.resize(4);

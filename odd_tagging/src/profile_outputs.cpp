@@ -1,6 +1,7 @@
 // odd_profile.geojson and odd_profile.csv (profile_outputs.hpp).
 #include "railodd/odd/profile_outputs.hpp"
 
+#include "json_text.hpp"
 #include "text.hpp"
 
 #include <cmath>
@@ -12,48 +13,107 @@ namespace railodd::odd {
 
 namespace {
 
-using ojson = nlohmann::ordered_json;
-
 // 7 decimals of a degree are about 1 cm: finer digits are noise of the
 // projection and only make the file larger and less diffable.
 double degrees7(double v) { return std::round(v * 1e7) / 1e7; }
 
-ojson position(const std::pair<double, double>& lonlat) {
-    return ojson::array({degrees7(lonlat.first), degrees7(lonlat.second)});
+void append_position(std::string& out, const std::pair<double, double>& lonlat) {
+    out += '[';
+    json_text::number(out, degrees7(lonlat.first));
+    out += ',';
+    json_text::number(out, degrees7(lonlat.second));
+    out += ']';
 }
 
-ojson geometry(const TaggedElement& e) {
+void append_geometry(std::string& out, const TaggedElement& e) {
     if (e.lonlat.empty()) {
-        return nullptr; // RFC 7946 3.2: an unlocated feature has a null geometry
+        out += "null"; // RFC 7946 3.2: an unlocated feature has a null geometry
+        return;
     }
     if (e.point || e.lonlat.size() == 1) {
-        return {{"type", "Point"}, {"coordinates", position(e.lonlat.front())}};
+        out += R"({"type":"Point","coordinates":)";
+        append_position(out, e.lonlat.front());
+        out += '}';
+        return;
     }
-    ojson coords = ojson::array();
-    for (const auto& p : e.lonlat) {
-        coords.push_back(position(p));
+    out += R"({"type":"LineString","coordinates":[)";
+    for (std::size_t i = 0; i < e.lonlat.size(); ++i) {
+        if (i > 0) {
+            out += ',';
+        }
+        append_position(out, e.lonlat[i]);
     }
-    return {{"type", "LineString"}, {"coordinates", std::move(coords)}};
+    out += "]}";
 }
 
-ojson feature(const TaggedElement& e) {
-    ojson attrs = ojson::object();
-    for (const auto& a : e.attributes) {
-        attrs[a.name] = std::visit([](const auto& v) { return ojson(v); }, a.value);
+void append_value(std::string& out, const AttributeValue& v) {
+    if (const auto* d = std::get_if<double>(&v)) {
+        json_text::number(out, *d);
+    } else if (const auto* b = std::get_if<bool>(&v)) {
+        out += *b ? "true" : "false";
+    } else {
+        json_text::string(out, std::get<std::string>(v));
     }
-    ojson props;
-    props["odd_element"] = e.element;
-    props["element_id"] = e.element_id;
-    props["attributes"] = std::move(attrs);
-    props["road_id"] = e.road_id;
-    props["track"] = e.track;
-    props["s_start"] = e.s_start;
-    props["s_end"] = e.s_end;
-    props["chainage_start"] = e.chainage_start;
-    props["chainage_end"] = e.chainage_end;
-    props["osm_ids"] = e.osm_ids;
-    props["source"] = e.source;
-    return {{"type", "Feature"}, {"geometry", geometry(e)}, {"properties", std::move(props)}};
+}
+
+// As an ordered JSON object: a repeated name keeps its first place and its
+// last value.
+void append_attributes(std::string& out, const std::vector<TaggedAttribute>& attributes) {
+    out += '{';
+    bool first = true;
+    for (std::size_t i = 0; i < attributes.size(); ++i) {
+        const auto& name = attributes[i].name;
+        bool seen = false;
+        for (std::size_t j = 0; j < i && !seen; ++j) {
+            seen = attributes[j].name == name;
+        }
+        if (seen) {
+            continue;
+        }
+        const AttributeValue* value = &attributes[i].value;
+        for (std::size_t j = i + 1; j < attributes.size(); ++j) {
+            if (attributes[j].name == name) {
+                value = &attributes[j].value;
+            }
+        }
+        out += first ? "" : ",";
+        first = false;
+        json_text::string(out, name);
+        out += ':';
+        append_value(out, *value);
+    }
+    out += '}';
+}
+
+void append_feature(std::string& out, const TaggedElement& e) {
+    out += R"({"type":"Feature","geometry":)";
+    append_geometry(out, e);
+    out += R"(,"properties":{"odd_element":)";
+    json_text::string(out, e.element);
+    out += R"(,"element_id":)";
+    json_text::string(out, e.element_id);
+    out += R"(,"attributes":)";
+    append_attributes(out, e.attributes);
+    out += R"(,"road_id":)";
+    json_text::string(out, e.road_id);
+    out += R"(,"track":)";
+    json_text::number(out, static_cast<unsigned long long>(e.track));
+    const std::pair<const char*, double> numbers[] = {{R"(,"s_start":)", e.s_start},
+                                                      {R"(,"s_end":)", e.s_end},
+                                                      {R"(,"chainage_start":)", e.chainage_start},
+                                                      {R"(,"chainage_end":)", e.chainage_end}};
+    for (const auto& [key, value] : numbers) {
+        out += key;
+        json_text::number(out, value);
+    }
+    out += R"(,"osm_ids":[)";
+    for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {
+        out += i > 0 ? "," : "";
+        json_text::string(out, e.osm_ids[i]);
+    }
+    out += R"(],"source":)";
+    json_text::string(out, e.source);
+    out += "}}";
 }
 
 std::string value_text(const AttributeValue& value) {
@@ -113,8 +173,12 @@ std::string joined(const std::vector<std::string>& parts, const char* sep) {
 // two runs read element by element.
 void write_geojson(const OddProfile& profile, std::ostream& out) {
     out << "{\"type\": \"FeatureCollection\", \"name\": \"odd_profile\", \"features\": [\n";
+    std::string line;
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        out << feature(profile.elements[i]).dump() << (i + 1 < profile.elements.size() ? ",\n" : "\n");
+        line.clear();
+        append_feature(line, profile.elements[i]);
+        line += i + 1 < profile.elements.size() ? ",\n" : "\n";
+        out << line;
     }
     out << "]}\n";
 }

@@ -66,7 +66,11 @@ void OutputStage::write_with(std::string_view name, const std::function<void(std
 
 std::vector<fs::path> OutputStage::commit() {
     std::vector<fs::path> written;
-    for (const auto& name : names_) {
+    // By name, not by when each writer started: outputs written on several
+    // threads are listed in the same order on every run.
+    std::vector<std::string> names = names_;
+    std::sort(names.begin(), names.end());
+    for (const auto& name : names) {
         const fs::path from = staging_ / name;
         if (!fs::exists(from)) {
             continue; // reserved but never written
