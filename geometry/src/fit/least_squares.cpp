@@ -113,11 +113,9 @@ private:
         }
         const double cost = lin.r.squaredNorm();
         const double gap = mode_ == EndMode::exact ? lin.c.cwiseAbs().maxCoeff() : 0.0;
-        // Only the lower triangle: LDLT reads no more, and it halves the
-        // largest product of the solve.
-        Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(lin.J.cols(), lin.J.cols());
-        JtJ.selfadjointView<Eigen::Lower>().rankUpdate(lin.J.transpose());
-        const Eigen::VectorXd g = lin.J.transpose() * lin.r;
+        Eigen::MatrixXd JtJ;
+        Eigen::VectorXd g;
+        normal_equations(lin, JtJ, g);
         for (int tries = 0; tries < 10; ++tries) {
             Eigen::MatrixXd A = JtJ;
             A.diagonal() += mu_ * (JtJ.diagonal().array() + 1e-12).matrix();
@@ -151,6 +149,34 @@ private:
             return Outcome::fell_back;
         }
         return Outcome::stuck;
+    }
+
+    // J^T J (lower triangle: LDLT reads no more) and J^T r. The dense point
+    // rows by one product; the sparse rows below them one at a time, by their
+    // non-zero entries: the fine spline has two smoothness rows per knot and
+    // about a knot per point, so a dense product over them was most of its
+    // cost.
+    static void normal_equations(const Linearisation& lin, Eigen::MatrixXd& JtJ, Eigen::VectorXd& g) {
+        const long cols = lin.J.cols(), top = std::min(lin.dense_rows, lin.J.rows());
+        JtJ = Eigen::MatrixXd::Zero(cols, cols);
+        JtJ.selfadjointView<Eigen::Lower>().rankUpdate(lin.J.topRows(top).transpose());
+        g = lin.J.topRows(top).transpose() * lin.r.head(top);
+        std::vector<long> nz;
+        for (long row = top; row < lin.J.rows(); ++row) {
+            nz.clear();
+            for (long c = 0; c < cols; ++c) {
+                if (lin.J(row, c) != 0.0) {
+                    nz.push_back(c);
+                }
+            }
+            for (std::size_t a = 0; a < nz.size(); ++a) {
+                const double ja = lin.J(row, nz[a]);
+                g[nz[a]] += ja * lin.r[row];
+                for (std::size_t b = 0; b <= a; ++b) {
+                    JtJ(nz[a], nz[b]) += ja * lin.J(row, nz[b]);
+                }
+            }
+        }
     }
 
     void accept(CurvatureModel&& m, double before, double after, Evaluated&& e) {

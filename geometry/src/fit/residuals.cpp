@@ -280,6 +280,7 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
     Linearisation lin;
     lin.J = Eigen::MatrixXd::Zero(static_cast<long>(rows), static_cast<long>(map.size()));
     lin.r = Eigen::VectorXd::Zero(static_cast<long>(rows));
+    lin.dense_rows = static_cast<long>(p.pts.size() + (p.opt.pin_first ? 1 : 0) + (p.opt.pin_last ? 1 : 0));
     fill_residuals(m, feet, curve, p, lin.r);
     if (p.opt.end) {
         lin.c = end_gap(m, poses.back(), *p.opt.end);

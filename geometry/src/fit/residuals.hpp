@@ -55,6 +55,10 @@ struct Evaluated {
 struct Linearisation {
     Eigen::MatrixXd J; // data rows
     Eigen::VectorXd r;
+    // J's first dense_rows rows are the points' (every parameter upstream of
+    // a point moves it); below them the smoothness rows, each touching a few
+    // knots, and any appended end rows.
+    long dense_rows = 0;
     Eigen::MatrixXd C; // end gap rows, with an end pose
     Eigen::VectorXd c;
 };
