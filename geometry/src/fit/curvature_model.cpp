@@ -88,12 +88,16 @@ std::vector<double> ParameterMap::get(const CurvatureModel& m) const {
 
 void ParameterMap::set(CurvatureModel& m, const std::vector<double>& v) const {
     for (std::size_t i = 0; i < slots_.size(); ++i) {
-        const Slot& s = slots_[i];
-        switch (s.kind) {
-        case Kind::start: (s.index == 0 ? m.start.x : s.index == 1 ? m.start.y : m.start.hdg) = v[i]; break;
-        case Kind::length: m.lengths[s.index] = v[i]; break;
-        case Kind::curvature: m.curv[s.index] = v[i]; break;
-        }
+        set_one(m, i, v[i]);
+    }
+}
+
+void ParameterMap::set_one(CurvatureModel& m, std::size_t i, double value) const {
+    const Slot& s = slots_[i];
+    switch (s.kind) {
+    case Kind::start: (s.index == 0 ? m.start.x : s.index == 1 ? m.start.y : m.start.hdg) = value; break;
+    case Kind::length: m.lengths[s.index] = value; break;
+    case Kind::curvature: m.curv[s.index] = value; break;
     }
 }
 

@@ -42,6 +42,7 @@ public:
     std::size_t size() const noexcept { return slots_.size(); }
     std::vector<double> get(const CurvatureModel& model) const;
     void set(CurvatureModel& model, const std::vector<double>& values) const;
+    void set_one(CurvatureModel& model, std::size_t i, double value) const;
     // Segments [first, last] whose shape parameter i changes; the start pose
     // parameters affect every segment rigidly and report (0, 0).
     std::pair<std::size_t, std::size_t> influence(std::size_t i) const { return slots_[i].range; }

@@ -170,9 +170,11 @@ private:
 
 // The curve points and end pose of a model that differs from the current one
 // only in segments [a, b]: recomputed there, moved rigidly downstream.
+// `p2` is scratch space for the perturbed knot poses: one allocation per
+// linearisation, not per column.
 void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, bool from_start,
                      const std::vector<Pose>& poses, const std::vector<Foot>& feet, const std::vector<Point2>& curve,
-                     std::vector<Point2>& out, Pose& end_out) {
+                     std::vector<Pose>& p2, std::vector<Point2>& out, Pose& end_out) {
     if (from_start) {
         // The start pose moves the whole curve rigidly: no evaluation needed.
         const Pose& from = poses.front();
@@ -186,7 +188,8 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
         end_out = {q.x, q.y, e.hdg + (to.hdg - from.hdg), e.curvature};
         return;
     }
-    std::vector<Pose> p2(poses);
+    // Only p2[a .. b + 1] is read below.
+    p2[a] = poses[a];
     for (std::size_t j = a; j <= b; ++j) {
         p2[j + 1] = evaluate(p2[j], m2.segment(j), m2.lengths[j]);
     }
@@ -204,7 +207,7 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
     }
     const Pose& e = poses.back();
     if (b + 1 == poses.size() - 1) {
-        end_out = p2.back();
+        end_out = p2[b + 1];
     } else {
         const Point2 q = downstream({e.x, e.y});
         end_out = {q.x, q.y, e.hdg + (p2[b + 1].hdg - poses[b + 1].hdg), e.curvature};
@@ -288,21 +291,23 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
     }
     const std::vector<double> base = map.get(m);
     std::vector<Point2> moved(feet.size());
+    std::vector<Pose> p2(poses.size());
     Eigen::VectorXd r2(static_cast<long>(rows));
+    // One working copy, each parameter nudged and put back exactly: no model
+    // copy per column.
+    CurvatureModel m2 = m;
     for (std::size_t i = 0; i < map.size(); ++i) {
-        CurvatureModel m2 = m;
-        std::vector<double> v = base;
         const double h = step_for(map, i);
-        v[i] += h;
-        map.set(m2, v);
+        map.set_one(m2, i, base[i] + h);
         const auto [a, b] = map.influence(i);
         Pose end2;
-        perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, moved, end2);
+        perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, p2, moved, end2);
         fill_residuals(m2, feet, moved, p, r2);
         lin.J.col(static_cast<long>(i)) = (r2 - lin.r) / h;
         if (p.opt.end) {
             lin.C.col(static_cast<long>(i)) = (end_gap(m2, end2, *p.opt.end) - lin.c) / h;
         }
+        map.set_one(m2, i, base[i]);
     }
     return lin;
 }
