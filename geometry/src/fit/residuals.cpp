@@ -101,9 +101,7 @@ void refine_feet(const CurvatureModel& m, const std::vector<Pose>& poses, const 
     }
 }
 
-// Residual rows: normal distance of every point, the along-track distance of
-// the first and last point, curvature kinks. The end pose is a constraint
-// (end_constraint.hpp), or weighted rows appended where it cannot be one.
+// How many rows fill_residuals fills.
 std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     std::size_t rows = p.pts.size() + (p.opt.pin_first ? 1 : 0) + (p.opt.pin_last ? 1 : 0);
     if (p.opt.kink_sigma > 0 && m.knot_var.size() > 2) {
@@ -115,8 +113,10 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     return rows;
 }
 
-void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
-                    const std::vector<Point2>& curve, const Problem& p, Eigen::VectorXd& r) {
+// The point rows: normal distance of every point, the along-track distance
+// of the first and last point.
+std::size_t fill_point_rows(const std::vector<Foot>& feet, const std::vector<Point2>& curve, const Problem& p,
+                            Eigen::VectorXd& r) {
     const double w = 1.0 / p.opt.sigma_m;
     std::size_t row = 0;
     for (std::size_t i = 0; i < feet.size(); ++i) {
@@ -131,22 +131,71 @@ void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
     if (p.opt.pin_last) {
         along(feet.size() - 1);
     }
-    if (p.opt.kink_sigma > 0 && m.knot_var.size() > 2) {
+    return row;
+}
+
+bool has_kink_rows(const CurvatureModel& m, const Problem& p) {
+    return p.opt.kink_sigma > 0 && m.knot_var.size() > 2;
+}
+
+// Curvature kink at knot k (1 .. knots - 2).
+double kink_row(const CurvatureModel& m, const Problem& p, std::size_t k) {
+    const double a = m.knot_curvature(k - 1), b = m.knot_curvature(k), c = m.knot_curvature(k + 1);
+    // Tight curves change curvature by more in absolute terms: the
+    // allowed kink grows with the local curvature.
+    const double scale = std::max(p.opt.kink_sigma, 0.25 * std::max({std::abs(a), std::abs(b), std::abs(c)}));
+    return huber((a - 2 * b + c) / scale);
+}
+
+// Per unit length: long knot intervals are long because nodes are sparse
+// there, which mappers do on straight track.
+double ridge_row(const CurvatureModel& m, const Problem& p, std::size_t k) {
+    const double left = k > 0 ? m.lengths[k - 1] : 0.0;
+    const double right = k < m.segments() ? m.lengths[k] : 0.0;
+    return huber(m.knot_curvature(k) * std::sqrt(0.5 * (left + right) / 20.0) / p.opt.ridge_sigma);
+}
+
+// Residual rows: the point rows, then curvature kinks, then the ridge. The
+// end pose is a constraint (end_constraint.hpp), or weighted rows appended
+// where it cannot be one.
+void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
+                    const std::vector<Point2>& curve, const Problem& p, Eigen::VectorXd& r) {
+    std::size_t row = fill_point_rows(feet, curve, p, r);
+    if (has_kink_rows(m, p)) {
         for (std::size_t k = 1; k + 1 < m.knot_var.size(); ++k) {
-            const double a = m.knot_curvature(k - 1), b = m.knot_curvature(k), c = m.knot_curvature(k + 1);
-            // Tight curves change curvature by more in absolute terms: the
-            // allowed kink grows with the local curvature.
-            const double scale = std::max(p.opt.kink_sigma, 0.25 * std::max({std::abs(a), std::abs(b), std::abs(c)}));
-            r[row++] = huber((a - 2 * b + c) / scale);
+            r[row++] = kink_row(m, p, k);
         }
     }
     if (p.opt.ridge_sigma > 0) {
-        // Per unit length: long knot intervals are long because nodes are
-        // sparse there, which mappers do on straight track.
         for (std::size_t k = 0; k < m.knot_var.size(); ++k) {
-            const double left = k > 0 ? m.lengths[k - 1] : 0.0;
-            const double right = k < m.segments() ? m.lengths[k] : 0.0;
-            r[row++] = huber(m.knot_curvature(k) * std::sqrt(0.5 * (left + right) / 20.0) / p.opt.ridge_sigma);
+            r[row++] = ridge_row(m, p, k);
+        }
+    }
+}
+
+// The Jacobian column of parameter i (influencing segments [a, b]) in the
+// smoothness rows: only the rows of knots a - 1 .. b + 2 can change, the
+// rest stay exactly zero (the start pose changes none).
+void smoothness_column(const CurvatureModel& m2, const ParameterMap& map, std::size_t i, const Problem& p,
+                       const Eigen::VectorXd& r, double h, std::size_t first_row, Eigen::MatrixXd& J) {
+    if (map.is_start(i)) {
+        return;
+    }
+    const auto [a, b] = map.influence(i);
+    const std::size_t knots = m2.knot_var.size();
+    const long col = static_cast<long>(i);
+    std::size_t row = first_row;
+    if (has_kink_rows(m2, p)) {
+        for (std::size_t k = std::max<std::size_t>(1, a == 0 ? 1 : a - 1); k + 1 < knots && k <= b + 2; ++k) {
+            const long at = static_cast<long>(row + k - 1);
+            J(at, col) = (kink_row(m2, p, k) - r[at]) / h;
+        }
+        row += knots - 2;
+    }
+    if (p.opt.ridge_sigma > 0) {
+        for (std::size_t k = a; k < knots && k <= b + 1; ++k) {
+            const long at = static_cast<long>(row + k);
+            J(at, col) = (ridge_row(m2, p, k) - r[at]) / h;
         }
     }
 }
@@ -302,8 +351,10 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
         const auto [a, b] = map.influence(i);
         Pose end2;
         perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, p2, moved, end2);
-        fill_residuals(m2, feet, moved, p, r2);
-        lin.J.col(static_cast<long>(i)) = (r2 - lin.r) / h;
+        const std::size_t point_rows = fill_point_rows(feet, moved, p, r2);
+        const long n = static_cast<long>(point_rows);
+        lin.J.col(static_cast<long>(i)).head(n) = (r2.head(n) - lin.r.head(n)) / h;
+        smoothness_column(m2, map, i, p, lin.r, h, point_rows, lin.J);
         if (p.opt.end) {
             lin.C.col(static_cast<long>(i)) = (end_gap(m2, end2, *p.opt.end) - lin.c) / h;
         }
