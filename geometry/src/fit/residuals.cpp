@@ -114,16 +114,21 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
 }
 
 // The point rows: normal distance of every point, the along-track distance
-// of the first and last point.
+// of the first and last point. Only points from `from` on are filled (those
+// before it have not moved); the rows' count is returned.
 std::size_t fill_point_rows(const std::vector<Foot>& feet, const std::vector<Point2>& curve, const Problem& p,
-                            Eigen::VectorXd& r) {
+                            Eigen::VectorXd& r, std::size_t from = 0) {
     const double w = 1.0 / p.opt.sigma_m;
-    std::size_t row = 0;
-    for (std::size_t i = 0; i < feet.size(); ++i) {
-        r[row++] = w * ((p.pts[i].x - curve[i].x) * feet[i].nx + (p.pts[i].y - curve[i].y) * feet[i].ny);
+    for (std::size_t i = from; i < feet.size(); ++i) {
+        r[static_cast<long>(i)] = w * ((p.pts[i].x - curve[i].x) * feet[i].nx + (p.pts[i].y - curve[i].y) * feet[i].ny);
     }
+    std::size_t row = feet.size();
     auto along = [&](std::size_t i) {
-        r[row++] = w * ((p.pts[i].x - curve[i].x) * feet[i].tx + (p.pts[i].y - curve[i].y) * feet[i].ty);
+        if (i >= from) {
+            r[static_cast<long>(row)] =
+                w * ((p.pts[i].x - curve[i].x) * feet[i].tx + (p.pts[i].y - curve[i].y) * feet[i].ty);
+        }
+        ++row;
     };
     if (p.opt.pin_first) {
         along(0);
@@ -221,15 +226,16 @@ private:
 // only in segments [a, b]: recomputed there, moved rigidly downstream.
 // `p2` is scratch space for the perturbed knot poses: one allocation per
 // linearisation, not per column.
+// Points before `first_moved` sit upstream of segment a and are left as they are.
 void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, bool from_start,
                      const std::vector<Pose>& poses, const std::vector<Foot>& feet, const std::vector<Point2>& curve,
-                     std::vector<Pose>& p2, std::vector<Point2>& out, Pose& end_out) {
+                     std::size_t first_moved, std::vector<Pose>& p2, std::vector<Point2>& out, Pose& end_out) {
     if (from_start) {
         // The start pose moves the whole curve rigidly: no evaluation needed.
         const Pose& from = poses.front();
         const Pose to{m2.start.x, m2.start.y, m2.start.hdg, from.curvature};
         const Rigid move(from, to);
-        for (std::size_t i = 0; i < feet.size(); ++i) {
+        for (std::size_t i = first_moved; i < feet.size(); ++i) {
             out[i] = move(curve[i]);
         }
         const Pose& e = poses.back();
@@ -243,7 +249,7 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
         p2[j + 1] = evaluate(p2[j], m2.segment(j), m2.lengths[j]);
     }
     const Rigid downstream(poses[b + 1], p2[b + 1]);
-    for (std::size_t i = 0; i < feet.size(); ++i) {
+    for (std::size_t i = first_moved; i < feet.size(); ++i) {
         const Foot& f = feet[i];
         if (f.segment < a) {
             out[i] = curve[i];
@@ -339,6 +345,15 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
         lin.C = Eigen::MatrixXd::Zero(lin.c.size(), static_cast<long>(map.size()));
     }
     const std::vector<double> base = map.get(m);
+    // The first point on or beyond each segment: a parameter of segments
+    // [a, b] leaves every point before first_on[a] where it is.
+    std::vector<std::size_t> first_on(m.segments() + 1, feet.size());
+    for (std::size_t i = feet.size(); i-- > 0;) {
+        first_on[feet[i].segment] = i;
+    }
+    for (std::size_t j = m.segments(); j-- > 0;) {
+        first_on[j] = std::min(first_on[j], first_on[j + 1]);
+    }
     std::vector<Point2> moved(feet.size());
     std::vector<Pose> p2(poses.size());
     Eigen::VectorXd r2(static_cast<long>(rows));
@@ -350,10 +365,19 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
         map.set_one(m2, i, base[i] + h);
         const auto [a, b] = map.influence(i);
         Pose end2;
-        perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, p2, moved, end2);
-        const std::size_t point_rows = fill_point_rows(feet, moved, p, r2);
-        const long n = static_cast<long>(point_rows);
-        lin.J.col(static_cast<long>(i)).head(n) = (r2.head(n) - lin.r.head(n)) / h;
+        const std::size_t from = map.is_start(i) ? 0 : first_on[a];
+        perturbed_curve(m2, a, b, map.is_start(i), poses, feet, curve, from, p2, moved, end2);
+        const std::size_t point_rows = fill_point_rows(feet, moved, p, r2, from);
+        const long n0 = static_cast<long>(from), n = static_cast<long>(feet.size());
+        lin.J.col(static_cast<long>(i)).segment(n0, n - n0) = (r2.segment(n0, n - n0) - lin.r.segment(n0, n - n0)) / h;
+        for (long row = n; row < static_cast<long>(point_rows); ++row) {
+            // The pinned ends' rows: unfilled (not moved) rows keep r2 from
+            // an earlier column, so only a moved end counts.
+            const std::size_t end_point = row == n && p.opt.pin_first ? 0 : feet.size() - 1;
+            if (end_point >= from) {
+                lin.J(row, static_cast<long>(i)) = (r2[row] - lin.r[row]) / h;
+            }
+        }
         smoothness_column(m2, map, i, p, lin.r, h, point_rows, lin.J);
         if (p.opt.end) {
             lin.C.col(static_cast<long>(i)) = (end_gap(m2, end2, *p.opt.end) - lin.c) / h;
