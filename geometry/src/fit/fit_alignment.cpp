@@ -256,6 +256,7 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     so.kink_sigma = 0.0;
     so.ridge_sigma = 0.0;
     so.geodesic_acceleration = true;
+    so.abandon_loops = true; // a candidate that loops is not chosen (below)
 
     std::vector<double> ks, kk;
     double s = 0.0;

@@ -3,6 +3,7 @@
 #include "end_constraint.hpp"
 #include "residuals.hpp"
 
+#include "../loop_bounds.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 
 #include <Eigen/Dense>
@@ -53,6 +54,9 @@ public:
                 : map_.size() >= end_rows(model) ? EndMode::exact
                                                       : EndMode::weighted),
           on_end_(!options.end) {
+        if (options.abandon_loops) {
+            loop_bounds_.emplace(points);
+        }
         // No segment, nor the whole curve, needs to be longer than twice the
         // polyline through the data.
         for (std::size_t i = 1; i < points.size(); ++i) {
@@ -72,9 +76,10 @@ public:
             if (o == Outcome::stuck) {
                 break;
             }
-            if (total_length(model_) > max_length_) {
+            if (total_length(model_) > max_length_ || (loop_bounds_ && loops())) {
                 // Diverged: the curve has grown far longer than the data
-                // (spiralling at the curvature bound). Nothing to keep.
+                // (spiralling at the curvature bound), or loops where the
+                // caller will reject it. Nothing to keep.
                 report.gave_up = true;
                 break;
             }
@@ -96,6 +101,14 @@ public:
     }
 
 private:
+    bool loops() const {
+        double turning = 0.0;
+        for (std::size_t j = 0; j < model_.segments(); ++j) {
+            turning += piece_turning(model_.knot_curvature(j), model_.knot_curvature(j + 1), model_.lengths[j]);
+        }
+        return loop_bounds_->exceeded(total_length(model_), turning);
+    }
+
     enum class Outcome { improved, approaching_end, reached_end, stuck, fell_back };
 
     // A trial model and the largest row of its end gap (0 without an end).
@@ -261,6 +274,7 @@ private:
     bool on_end_;
     double max_length_ = 50.0;
     double mu_ = 1e-3;
+    std::optional<LoopBounds> loop_bounds_;
     std::optional<Evaluated> known_; // model_ evaluated by the cost of the step that made it
     double cost_ = 0.0;
     double gain_ = 0.0;

@@ -32,6 +32,11 @@ struct SolveOptions {
     // Sum of squared distances (m^2) above which the caller rejects the fit
     // anyway: the solve stops once its progress cannot bring it below.
     double give_up_rss = std::numeric_limits<double>::infinity();
+    // The caller rejects a curve that loops (loops_back, fit_alignment.hpp):
+    // the solve stops as soon as it does. Such a solve would run on at the
+    // curvature bound, where every evaluation costs a sub-interval per 0.3
+    // rad of turn.
+    bool abandon_loops = false;
 };
 
 struct SolveReport {
