@@ -78,6 +78,32 @@ TEST(OddProfileIo, StreamedTextIsTheSameDocumentAsTheTree) {
     EXPECT_EQ(nlohmann::ordered_json::parse(to_json_text(p)), to_json(p)) << "empty lists stay valid JSON";
 }
 
+TEST(OddProfileIo, JsonElementLinesAreCompactJsonDumps) {
+    // The elements are printed directly, not through json objects: every
+    // line must still be the tree's compact dump, escapes, repeated
+    // attribute names, number formats and optional keys included.
+    OddProfile p = sample_profile();
+    p.elements.resize(3);
+    TaggedElement& e = p.elements[1];
+    e.attributes = {{"name", std::string{"K\xc3\xb6ln \"Hbf\"\\ \t\x01"}}, {"radius", 1e-5}, {"big", 1.5e300},
+                    {"name", std::string{"Deutz"}}, {"flag", true}, {"zero", -0.0}};
+    e.osm_ids = {"way:1", "node:\xe2\x82\xac"};
+    e.s_end = 123456789.125;
+    e.track = 18446744073709551615ULL;
+    e.point = true;
+    e.reversed = true;
+    p.elements[2].osm_ids.clear();
+    const std::string text = to_json_text(p);
+    const nlohmann::ordered_json tree = to_json(p);
+    for (std::size_t i = 0; i < p.elements.size(); ++i) {
+        const std::string line = "\n  " + tree["elements"][i].dump() + (i + 1 < p.elements.size() ? ",\n" : "\n");
+        EXPECT_NE(text.find(line), std::string::npos) << line << text;
+    }
+    EXPECT_NE(text.find(R"("reversed":true})"), std::string::npos);
+    e.element_id = std::string{"sc.\xff"}; // not UTF-8: refused as dump() refuses it
+    EXPECT_THROW(to_json_text(p), nlohmann::json::type_error);
+}
+
 TEST(OddProfileIo, ReadingNamesTheFileAndTheMissingKey) {
     const auto dir = scratch_dir();
     auto j = nlohmann::json::parse(to_json(sample_profile()).dump());

@@ -37,4 +37,41 @@ void string(std::string& out, std::string_view value) {
     out += '"';
 }
 
+void value(std::string& out, const AttributeValue& v) {
+    if (const auto* d = std::get_if<double>(&v)) {
+        number(out, *d);
+    } else if (const auto* b = std::get_if<bool>(&v)) {
+        out += *b ? "true" : "false";
+    } else {
+        string(out, std::get<std::string>(v));
+    }
+}
+
+void attributes(std::string& out, const std::vector<TaggedAttribute>& attributes) {
+    out += '{';
+    bool first = true;
+    for (std::size_t i = 0; i < attributes.size(); ++i) {
+        const auto& name = attributes[i].name;
+        bool seen = false;
+        for (std::size_t j = 0; j < i && !seen; ++j) {
+            seen = attributes[j].name == name;
+        }
+        if (seen) {
+            continue;
+        }
+        const AttributeValue* last = &attributes[i].value;
+        for (std::size_t j = i + 1; j < attributes.size(); ++j) {
+            if (attributes[j].name == name) {
+                last = &attributes[j].value;
+            }
+        }
+        out += first ? "" : ",";
+        first = false;
+        string(out, name);
+        out += ':';
+        value(out, *last);
+    }
+    out += '}';
+}
+
 } // namespace railodd::odd::json_text

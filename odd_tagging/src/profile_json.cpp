@@ -4,6 +4,8 @@
 // `lonlat` is not part of the JSON: the geometry lives in odd_profile.geojson.
 #include "railodd/odd/profile.hpp"
 
+#include "json_text.hpp"
+
 #include "railodd/util/errors.hpp"
 
 #include <fstream>
@@ -45,6 +47,36 @@ ojson element_json(const TaggedElement& e) {
         j["reversed"] = true;
     }
     return j;
+}
+
+// element_json(e).dump(), printed directly (json_text.hpp).
+void append_element(std::string& out, const TaggedElement& e) {
+    out += R"({"odd_element":)";
+    json_text::string(out, e.element);
+    out += R"(,"id":)";
+    json_text::string(out, e.element_id);
+    out += R"(,"attributes":)";
+    json_text::attributes(out, e.attributes);
+    out += R"(,"road_id":)";
+    json_text::string(out, e.road_id);
+    out += R"(,"s_start":)";
+    json_text::number(out, e.s_start);
+    out += R"(,"s_end":)";
+    json_text::number(out, e.s_end);
+    out += R"(,"track":)";
+    json_text::number(out, static_cast<unsigned long long>(e.track));
+    out += R"(,"chainage_start":)";
+    json_text::number(out, e.chainage_start);
+    out += R"(,"chainage_end":)";
+    json_text::number(out, e.chainage_end);
+    out += e.point ? R"(,"point":true,"osm_ids":[)" : R"(,"point":false,"osm_ids":[)";
+    for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {
+        out += i > 0 ? "," : "";
+        json_text::string(out, e.osm_ids[i]);
+    }
+    out += R"(],"source":)";
+    json_text::string(out, e.source);
+    out += e.reversed ? R"(,"reversed":true})" : "}";
 }
 
 // --- reading ---------------------------------------------------------------
@@ -167,8 +199,12 @@ void write_json(const OddProfile& profile, std::ostream& out) {
         out << " \"" << key << "\": " << head[key].dump() << ",\n";
     }
     out << " \"elements\": [\n";
+    std::string line;
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        out << "  " << element_json(profile.elements[i]).dump() << (i + 1 < profile.elements.size() ? ",\n" : "\n");
+        line.assign("  ");
+        append_element(line, profile.elements[i]);
+        line += i + 1 < profile.elements.size() ? ",\n" : "\n";
+        out << line;
     }
     out << " ],\n \"unparsed\": [\n";
     for (std::size_t i = 0; i < profile.unparsed.size(); ++i) {

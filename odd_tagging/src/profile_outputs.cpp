@@ -4,6 +4,7 @@
 #include "json_text.hpp"
 #include "text.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -46,45 +47,6 @@ void append_geometry(std::string& out, const TaggedElement& e) {
     out += "]}";
 }
 
-void append_value(std::string& out, const AttributeValue& v) {
-    if (const auto* d = std::get_if<double>(&v)) {
-        json_text::number(out, *d);
-    } else if (const auto* b = std::get_if<bool>(&v)) {
-        out += *b ? "true" : "false";
-    } else {
-        json_text::string(out, std::get<std::string>(v));
-    }
-}
-
-// As an ordered JSON object: a repeated name keeps its first place and its
-// last value.
-void append_attributes(std::string& out, const std::vector<TaggedAttribute>& attributes) {
-    out += '{';
-    bool first = true;
-    for (std::size_t i = 0; i < attributes.size(); ++i) {
-        const auto& name = attributes[i].name;
-        bool seen = false;
-        for (std::size_t j = 0; j < i && !seen; ++j) {
-            seen = attributes[j].name == name;
-        }
-        if (seen) {
-            continue;
-        }
-        const AttributeValue* value = &attributes[i].value;
-        for (std::size_t j = i + 1; j < attributes.size(); ++j) {
-            if (attributes[j].name == name) {
-                value = &attributes[j].value;
-            }
-        }
-        out += first ? "" : ",";
-        first = false;
-        json_text::string(out, name);
-        out += ':';
-        append_value(out, *value);
-    }
-    out += '}';
-}
-
 void append_feature(std::string& out, const TaggedElement& e) {
     out += R"({"type":"Feature","geometry":)";
     append_geometry(out, e);
@@ -93,7 +55,7 @@ void append_feature(std::string& out, const TaggedElement& e) {
     out += R"(,"element_id":)";
     json_text::string(out, e.element_id);
     out += R"(,"attributes":)";
-    append_attributes(out, e.attributes);
+    json_text::attributes(out, e.attributes);
     out += R"(,"road_id":)";
     json_text::string(out, e.road_id);
     out += R"(,"track":)";
@@ -116,20 +78,21 @@ void append_feature(std::string& out, const TaggedElement& e) {
     out += "}}";
 }
 
-std::string value_text(const AttributeValue& value) {
+void append_value_text(std::string& out, const AttributeValue& value) {
     if (const auto* d = std::get_if<double>(&value)) {
-        return text::format(*d);
+        out += text::format(*d);
+    } else if (const auto* b = std::get_if<bool>(&value)) {
+        out += *b ? "true" : "false";
+    } else {
+        out += std::get<std::string>(value);
     }
-    if (const auto* b = std::get_if<bool>(&value)) {
-        return *b ? "true" : "false";
-    }
-    return std::get<std::string>(value);
 }
 
-std::string metres(double v) {
+// As printf's "%.3f" (to_chars with a precision is specified so).
+void append_metres(std::string& out, double v) {
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
+    const auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 3);
+    out.append(buf, res.ptr);
 }
 
 // RFC 4180 2.6/2.7: quote fields holding a separator, quote or line break and
@@ -159,14 +122,6 @@ void append_row(std::string& out, const std::vector<std::string>& fields) {
     out += "\r\n";
 }
 
-std::string joined(const std::vector<std::string>& parts, const char* sep) {
-    std::string s;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        s += (i > 0 ? sep : "") + parts[i];
-    }
-    return s;
-}
-
 } // namespace
 
 // One feature per line: a whole route's profile stays a few MB, and diffs of
@@ -190,19 +145,42 @@ std::string to_geojson(const OddProfile& profile) {
 }
 
 void write_csv(const OddProfile& profile, std::ostream& out) {
-    std::string row;
+    std::string row, field;
     append_row(row, {"odd_element", "element_id", "road_id", "s_start", "s_end", "chainage_start", "chainage_end",
                      "track", "point", "attributes", "osm_ids", "source"});
     out << row;
+    // Fields appended in place, two buffers reused: a vector of strings per
+    // row made writing the Cologne network's 180,000 rows take half a second.
     for (const auto& e : profile.elements) {
-        std::vector<std::string> attrs;
-        for (const auto& a : e.attributes) {
-            attrs.push_back(a.name + "=" + value_text(a.value));
-        }
         row.clear();
-        append_row(row, {e.element, e.element_id, e.road_id, metres(e.s_start), metres(e.s_end),
-                         metres(e.chainage_start), metres(e.chainage_end), std::to_string(e.track),
-                         e.point ? "true" : "false", joined(attrs, ";"), joined(e.osm_ids, " "), e.source});
+        for (const std::string* text : {&e.element, &e.element_id, &e.road_id}) {
+            append_field(row, *text);
+            row += ',';
+        }
+        for (const double v : {e.s_start, e.s_end, e.chainage_start, e.chainage_end}) {
+            append_metres(row, v);
+            row += ',';
+        }
+        row += std::to_string(e.track);
+        row += e.point ? ",true," : ",false,";
+        field.clear();
+        for (std::size_t i = 0; i < e.attributes.size(); ++i) {
+            field += i > 0 ? ";" : "";
+            field += e.attributes[i].name;
+            field += '=';
+            append_value_text(field, e.attributes[i].value);
+        }
+        append_field(row, field);
+        row += ',';
+        field.clear();
+        for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {
+            field += i > 0 ? " " : "";
+            field += e.osm_ids[i];
+        }
+        append_field(row, field);
+        row += ',';
+        append_field(row, e.source);
+        row += "\r\n";
         out << row;
     }
 }
