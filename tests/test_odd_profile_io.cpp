@@ -39,6 +39,16 @@ void expect_same(const TaggedElement& a, const TaggedElement& b) {
     EXPECT_EQ(a.source, b.source);
 }
 
+// Escapes, UTF-8, number forms and a repeated attribute name (first place,
+// last value): what a directly printed line must still get right.
+void make_awkward(TaggedElement& e) {
+    e.attributes = {{"name", std::string{"K\xc3\xb6ln \"Hbf\"\\ \t\x01"}}, {"radius", 1e-5}, {"big", 1.5e300},
+                    {"name", std::string{"Deutz"}}, {"flag", true}, {"zero", -0.0}};
+    e.osm_ids = {"way:1", "node:\xe2\x82\xac"};
+    e.s_end = 123456789.125;
+    e.track = 18446744073709551615ULL;
+}
+
 } // namespace
 
 TEST(OddProfileIo, JsonRoundTripKeepsEverythingButGeometry) {
@@ -85,11 +95,7 @@ TEST(OddProfileIo, JsonElementLinesAreCompactJsonDumps) {
     OddProfile p = sample_profile();
     p.elements.resize(3);
     TaggedElement& e = p.elements[1];
-    e.attributes = {{"name", std::string{"K\xc3\xb6ln \"Hbf\"\\ \t\x01"}}, {"radius", 1e-5}, {"big", 1.5e300},
-                    {"name", std::string{"Deutz"}}, {"flag", true}, {"zero", -0.0}};
-    e.osm_ids = {"way:1", "node:\xe2\x82\xac"};
-    e.s_end = 123456789.125;
-    e.track = 18446744073709551615ULL;
+    make_awkward(e);
     e.point = true;
     e.reversed = true;
     p.elements[2].osm_ids.clear();
@@ -153,11 +159,7 @@ TEST(OddProfileIo, GeoJsonFeatureLinesAreCompactJsonDumps) {
     OddProfile p = sample_profile();
     p.elements.resize(2);
     TaggedElement& e = p.elements[1];
-    e.attributes = {{"name", std::string{"K\xc3\xb6ln \"Hbf\"\\ \t\x01"}}, {"radius", 1e-5}, {"big", 1.5e300},
-                    {"name", std::string{"Deutz"}}, {"flag", true}, {"zero", -0.0}};
-    e.osm_ids = {"way:1", "node:\xe2\x82\xac"};
-    e.s_end = 123456789.125;
-    e.track = 18446744073709551615ULL;
+    make_awkward(e);
     e.lonlat = {{-0.000000049, 89.99999999}, {179.9999999, -12.5}};
     nlohmann::ordered_json attrs = nlohmann::ordered_json::object();
     for (const auto& a : e.attributes) {
