@@ -229,9 +229,10 @@ bool as_good(const fit::SolveReport& s, std::size_t ps, const fit::SolveReport& 
 // scales and penalties, simplest first, without repeats.
 std::vector<std::vector<fit::Piece>> candidate_structures(const std::vector<double>& ks, const std::vector<double>& kk) {
     std::vector<std::vector<fit::Piece>> out{fit::template_structure(ks, kk)};
+    const fit::CurvatureDiagram diagram(ks, kk);
     for (double sigma : {2e-4, 1.4e-4, 1e-4, 7e-5, 5e-5, 3.5e-5, 2.5e-5, 1.7e-5}) {
         for (double penalty : {32.0, 8.0, 2.0}) {
-            auto pieces = fit::segment_curvature(ks, kk, {sigma, penalty});
+            auto pieces = diagram.segment({sigma, penalty});
             const bool seen = std::any_of(out.begin(), out.end(), [&](const auto& o) {
                 return o.size() == pieces.size() &&
                        std::equal(o.begin(), o.end(), pieces.begin(), [](const fit::Piece& a, const fit::Piece& b) {

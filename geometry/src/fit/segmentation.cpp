@@ -1,6 +1,7 @@
 #include "segmentation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -70,47 +71,87 @@ private:
     std::vector<Sums> acc_;
 };
 
+// The residual sums of a line, an arc and a transition over every knot range
+// [i, j]: they depend on neither the noise scale nor the penalty, so one
+// table serves every segmentation of a window (candidate_structures runs 24).
+class RangeTable {
+public:
+    RangeTable(const Moments& m, std::size_t n) : sse_(n * (n - 1) / 2) {
+        for (std::size_t j = 1; j < n; ++j) {
+            for (std::size_t i = 0; i < j; ++i) {
+                sse_[at(i, j)] = {m.zero(i, j).sse, m.constant(i, j).sse, m.linear(i, j).sse};
+            }
+        }
+    }
+    const std::array<double, 3>& operator()(std::size_t i, std::size_t j) const { return sse_[at(i, j)]; }
+
+private:
+    static std::size_t at(std::size_t i, std::size_t j) { return j * (j - 1) / 2 + i; }
+    std::vector<std::array<double, 3>> sse_;
+};
+
 struct Choice {
     double cost = std::numeric_limits<double>::infinity();
     std::size_t from = 0;
-    Piece piece;
+    PieceKind kind = PieceKind::line;
 };
 
-Choice best_piece(const Moments& m, std::size_t i, std::size_t j, double scale, double penalty, double length) {
-    Choice c;
-    const auto zero = m.zero(i, j), cons = m.constant(i, j), lin = m.linear(i, j);
-    const double c_line = zero.sse * scale + 0 * penalty;
-    const double c_arc = cons.sse * scale + 1 * penalty;
-    const double c_ramp = lin.sse * scale + 2 * penalty;
+// The cheapest piece over a range, from its residual sums: fewer parameters
+// win ties.
+Choice best_piece(const std::array<double, 3>& sse, double scale, double penalty) {
+    const double c_line = sse[0] * scale + 0 * penalty;
+    const double c_arc = sse[1] * scale + 1 * penalty;
+    const double c_ramp = sse[2] * scale + 2 * penalty;
     if (c_line <= c_arc && c_line <= c_ramp) {
-        c.cost = c_line;
-        c.piece = {PieceKind::line, length, 0.0, 0.0};
-    } else if (c_arc <= c_ramp) {
-        c.cost = c_arc;
-        c.piece = {PieceKind::arc, length, cons.a, cons.a};
-    } else {
-        c.cost = c_ramp;
-        c.piece = {PieceKind::ramp, length, lin.a, lin.b};
+        return {c_line, 0, PieceKind::line};
     }
-    return c;
+    if (c_arc <= c_ramp) {
+        return {c_arc, 0, PieceKind::arc};
+    }
+    return {c_ramp, 0, PieceKind::ramp};
+}
+
+Piece piece_over(const Moments& m, const std::vector<double>& s, std::size_t i, std::size_t j, PieceKind kind) {
+    const double length = s[j] - s[i];
+    if (kind == PieceKind::line) {
+        return {PieceKind::line, length, 0.0, 0.0};
+    }
+    if (kind == PieceKind::arc) {
+        const double c = m.constant(i, j).a;
+        return {PieceKind::arc, length, c, c};
+    }
+    const auto lin = m.linear(i, j);
+    return {PieceKind::ramp, length, lin.a, lin.b};
 }
 
 } // namespace
 
-std::vector<Piece> segment_curvature(const std::vector<double>& s, const std::vector<double>& k,
-                                     const SegmentationOptions& options) {
-    const std::size_t n = s.size();
-    if (n < 2) {
+struct CurvatureDiagram::Tables {
+    Tables(const std::vector<double>& s, const std::vector<double>& k) : moments(s, k), ranges(moments, s.size()) {}
+    Moments moments;
+    RangeTable ranges;
+};
+
+CurvatureDiagram::CurvatureDiagram(const std::vector<double>& s, const std::vector<double>& k) : s_(s) {
+    if (s.size() >= 2) {
+        tables_ = std::make_unique<Tables>(s, k);
+    }
+}
+
+CurvatureDiagram::~CurvatureDiagram() = default;
+
+std::vector<Piece> CurvatureDiagram::segment(const SegmentationOptions& options) const {
+    const std::size_t n = s_.size();
+    if (!tables_) {
         return {};
     }
-    const Moments m(s, k);
     const double scale = 1.0 / (options.curvature_sigma * options.curvature_sigma);
     // best[j]: cheapest split of knots [0, j] with a piece ending at knot j.
     std::vector<Choice> best(n);
     best[0].cost = 0.0;
     for (std::size_t j = 1; j < n; ++j) {
         for (std::size_t i = 0; i < j; ++i) {
-            Choice c = best_piece(m, i, j, scale, options.penalty, s[j] - s[i]);
+            Choice c = best_piece(tables_->ranges(i, j), scale, options.penalty);
             c.cost += best[i].cost + options.penalty; // each boundary's position is a parameter too
             if (c.cost < best[j].cost) {
                 c.from = i;
@@ -120,10 +161,15 @@ std::vector<Piece> segment_curvature(const std::vector<double>& s, const std::ve
     }
     std::vector<Piece> pieces;
     for (std::size_t j = n - 1; j > 0; j = best[j].from) {
-        pieces.push_back(best[j].piece);
+        pieces.push_back(piece_over(tables_->moments, s_, best[j].from, j, best[j].kind));
     }
     std::reverse(pieces.begin(), pieces.end());
     return pieces;
+}
+
+std::vector<Piece> segment_curvature(const std::vector<double>& s, const std::vector<double>& k,
+                                     const SegmentationOptions& options) {
+    return CurvatureDiagram(s, k).segment(options);
 }
 
 namespace {

@@ -4,6 +4,7 @@
 // (curvature zero), arcs (constant) and transitions (linear), by dynamic
 // programming with a penalty per parameter.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace railodd::geometry::fit {
@@ -25,6 +26,21 @@ struct SegmentationOptions {
 // s: knot chainages (ascending), k: curvature at each knot.
 std::vector<Piece> segment_curvature(const std::vector<double>& s, const std::vector<double>& k,
                                      const SegmentationOptions& options);
+
+// One window's curvature diagram, segmented at several noise scales and
+// penalties: the fits of every knot range are made once (O(n^2)), each
+// segmentation is then a dynamic programme over them. `s` must outlive it.
+class CurvatureDiagram {
+public:
+    CurvatureDiagram(const std::vector<double>& s, const std::vector<double>& k);
+    ~CurvatureDiagram();
+    std::vector<Piece> segment(const SegmentationOptions& options) const;
+
+private:
+    struct Tables;
+    const std::vector<double>& s_;
+    std::unique_ptr<Tables> tables_;
+};
 
 // The textbook template: straight where the smoothed curvature is negligible,
 // and each curved stretch one arc between two transitions. Catches simple
