@@ -16,13 +16,7 @@
 namespace railodd::geometry::fit {
 
 std::vector<double> point_distances(const CurvatureModel& model, const std::vector<Point2>& points) {
-    const IndexedAlignment ia(model.to_alignment(), 2.0);
-    std::vector<double> d;
-    d.reserve(points.size());
-    for (const auto& q : points) {
-        d.push_back(ia.project(q.x, q.y).distance);
-    }
-    return d;
+    return foot_distances(model, points);
 }
 
 namespace {

@@ -433,6 +433,20 @@ Eigen::VectorXd residuals_at_feet(const CurvatureModel& m, const Problem& p, con
     return out;
 }
 
+std::vector<double> foot_distances(const CurvatureModel& m, const std::vector<Point2>& pts) {
+    SolveOptions unpinned;
+    unpinned.pin_first = false;
+    unpinned.pin_last = false;
+    const std::vector<Pose> poses = m.knot_poses();
+    std::vector<Foot> feet = feet_of(m, poses, pts, unpinned);
+    refine_feet(m, poses, pts, feet, nullptr);
+    std::vector<double> d(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        d[i] = std::hypot(pts[i].x - feet[i].cx, pts[i].y - feet[i].cy);
+    }
+    return d;
+}
+
 double total_length(const CurvatureModel& m) {
     double sum = 0.0;
     for (double l : m.lengths) {

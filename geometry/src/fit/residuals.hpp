@@ -85,6 +85,11 @@ double cost_at_feet(const CurvatureModel& m, const Problem& p, const std::vector
 Eigen::VectorXd residuals_at_feet(const CurvatureModel& m, const Problem& p, const std::vector<Foot>& feet,
                                   bool with_end_rows);
 
+// Distance of every point to the curve: each foot walked to from the
+// previous point's along the curve, as feet_of, then settled by Newton steps
+// (to 1e-6 m along the curve).
+std::vector<double> foot_distances(const CurvatureModel& m, const std::vector<Point2>& pts);
+
 double total_length(const CurvatureModel& m);
 
 // Keeps a trial model in the range the data can support: curvature at most
