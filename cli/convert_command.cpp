@@ -147,16 +147,18 @@ struct Geometry {
     geometry::Crossings crossings;
     geometry::TrackGraph roads;
     geometry::FittedNetwork fitted_roads;
+    // The fitted tracks indexed at 2 m: made to place the features, used
+    // again by the tagger, dropped before the outputs are written.
+    std::vector<geometry::IndexedAlignment> indexed;
 };
 
 // Crossings found on the graph; features placed on the fitted centrelines.
 void place_features(const ingest::IngestResult& r, Geometry& g, const ConvertOptions& o) {
-    std::vector<geometry::IndexedAlignment> alignments;
-    alignments.reserve(g.fitted_tracks.edges.size());
+    g.indexed.reserve(g.fitted_tracks.edges.size());
     for (const auto& e : g.fitted_tracks.edges) {
-        alignments.emplace_back(e.alignment, 2.0);
+        g.indexed.emplace_back(e.alignment, 2.0);
     }
-    g.attachment = geometry::attach_features(g.tracks, alignments, r.features, o.feature_distance_m, o.station_distance_m);
+    g.attachment = geometry::attach_features(g.tracks, g.indexed, r.features, o.feature_distance_m, o.station_distance_m);
     g.crossings = geometry::find_crossings(g.tracks, r.tracks, r.roads, r.features);
 }
 
@@ -249,8 +251,9 @@ int ConvertCommand::run() {
     place_features(result, geo, opt_);
     // Phase 3: the OpenDRIVE map.
     timer.start("opendrive");
-    const xodr::MapInput map_input{result, geo.tracks, geo.fitted_tracks, geo.profiles, geo.cants,
-                                   geo.roads, geo.fitted_roads, geo.attachment, geo.crossings};
+    const xodr::MapInput map_input{result,     geo.tracks,       geo.fitted_tracks, geo.profiles,
+                                   geo.cants,  geo.roads,        geo.fitted_roads,  geo.attachment,
+                                   geo.crossings, &geo.indexed};
     xodr::MapOptions mo;
     mo.revision = xodr::parse_revision(opt_.odr_version);
     mo.name = fs::path(opt_.input).filename().string();
@@ -265,6 +268,7 @@ int ConvertCommand::run() {
     odd::OddProfile along;
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
     const odd::OddProfile& profile = route ? along : network;
+    std::vector<geometry::IndexedAlignment>().swap(geo.indexed);
 
     // Phase 5: stage every output, then move them into place together. The
     // large ones are streamed: no output is ever held whole in memory.

@@ -13,6 +13,7 @@
 #include "railodd/sample/sample_route.hpp"
 #include "railodd/util/errors.hpp"
 #include "railodd/xodr/map_builder.hpp"
+#include "railodd/xodr/xml_writer.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -36,6 +37,7 @@ struct Fixture {
     odd::Taxonomy taxonomy;
     odd::OddProfile profile;
     nlohmann::json truth;
+    std::vector<geometry::IndexedAlignment> indexed; // placed the features; build and profile made without
 };
 
 const Fixture& fixture() {
@@ -51,11 +53,10 @@ const Fixture& fixture() {
         x.cants = geometry::fit_cants(x.tracks, x.fitted, x.ingest.tracks, geometry::CantOptions{true});
         x.roads = geometry::build_track_graph(x.ingest.roads, {});
         x.fitted_roads = geometry::fit_road_graph(x.roads, geometry::RoadFitOptions{});
-        std::vector<geometry::IndexedAlignment> ia;
         for (const auto& e : x.fitted.edges) {
-            ia.emplace_back(e.alignment, 2.0);
+            x.indexed.emplace_back(e.alignment, 2.0);
         }
-        x.attachment = geometry::attach_features(x.tracks, ia, x.ingest.features, 50.0, 500.0);
+        x.attachment = geometry::attach_features(x.tracks, x.indexed, x.ingest.features, 50.0, 500.0);
         x.crossings = geometry::find_crossings(x.tracks, x.ingest.tracks, x.ingest.roads, x.ingest.features);
         const xodr::MapInput in{x.ingest, x.tracks, x.fitted, x.profiles, x.cants, x.roads,
                                 x.fitted_roads, x.attachment, x.crossings};
@@ -98,6 +99,19 @@ std::set<std::size_t> off_main_edges(const Fixture& f) {
         }
     }
     return edges;
+}
+
+TEST(OddRoute, PrebuiltTrackIndexesChangeNeitherMapNorProfile) {
+    // convert hands the indexes it made to place the features on to the map
+    // builder and the tagger; without them each indexes the tracks itself.
+    const Fixture& f = fixture();
+    const xodr::MapInput in{f.ingest, f.tracks,       f.fitted,     f.profiles,  f.cants,
+                            f.roads,  f.fitted_roads, f.attachment, f.crossings, &f.indexed};
+    const xodr::MapBuild build = xodr::build_map(in, xodr::MapOptions{});
+    EXPECT_EQ(xodr::write_xodr(build.map, xodr::Revision::v1_7), xodr::write_xodr(f.build.map, xodr::Revision::v1_7));
+    const odd::OddProfile profile = odd::tag_route({in, build}, f.taxonomy);
+    ASSERT_GT(profile.elements.size(), 50u);
+    EXPECT_EQ(odd::to_json_text(profile), odd::to_json_text(f.profile));
 }
 
 TEST(OddRoute, SampletonToBrooksideRunsTheMainLine) {

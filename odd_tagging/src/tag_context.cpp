@@ -19,6 +19,9 @@ TagContext::TagContext(const TaggerInput& in, const Taxonomy& taxonomy, OddProfi
 }
 
 const geometry::IndexedAlignment& TagContext::alignment(std::size_t edge) {
+    if (const geometry::IndexedAlignment* prebuilt = geo().indexed_edge(edge)) {
+        return *prebuilt;
+    }
     auto& slot = alignments_[edge];
     if (!slot) {
         slot = std::make_unique<geometry::IndexedAlignment>(geo().fitted_tracks.edges[edge].alignment, 2.0);

@@ -44,7 +44,8 @@ MapBuild build_map(const MapInput& in, const MapOptions& options) {
     b.map.header.geo_reference = in.ingest.projection.proj_string();
     set_bounds(b.map.header, in);
     // Tracks first (their ids are the smallest), then the corridor's roads.
-    b.rail = add_rail_network({in.tracks, in.fitted_tracks, in.profiles, in.cants, in.ingest.tracks}, options.rail, ids, b.map);
+    b.rail = add_rail_network({in.tracks, in.fitted_tracks, in.profiles, in.cants, in.ingest.tracks, in.indexed}, options.rail,
+                              ids, b.map);
     b.roads = add_road_network(in.roads, in.fitted_roads, in.ingest.roads, options.roads, ids, b.map);
     // Railway features on the written roads.
     FeatureContext ctx{in, b, ids, options.revision};

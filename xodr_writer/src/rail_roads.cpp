@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace railodd::xodr {
 
@@ -47,10 +48,12 @@ double gauge_m(const ingest::Tags& tags) {
     return end != g.c_str() && mm > 300.0 && mm < 3000.0 ? mm / 1000.0 : 1.435;
 }
 
+// `prebuilt`: the edge's alignment indexed at 2 m, or null.
 EdgeSource source_of(const geometry::GraphEdge& e, const geometry::FittedEdge& fe,
-                     const std::map<std::int64_t, const ingest::Way*>& ways) {
+                     const std::map<std::int64_t, const ingest::Way*>& ways, const geometry::IndexedAlignment* prebuilt) {
     EdgeSource src;
-    const geometry::IndexedAlignment ia(fe.alignment, 2.0);
+    std::optional<geometry::IndexedAlignment> own;
+    const geometry::IndexedAlignment& ia = prebuilt ? *prebuilt : own.emplace(fe.alignment, 2.0);
     for (const auto& span : e.ways) {
         const auto it = ways.find(span.way_id);
         const ingest::Way* w = it == ways.end() ? nullptr : it->second;
@@ -141,10 +144,14 @@ private:
         }
     }
 
+    const geometry::IndexedAlignment* prebuilt(std::size_t e) const {
+        return in_.indexed && in_.indexed->size() == in_.fitted.edges.size() ? &(*in_.indexed)[e] : nullptr;
+    }
+
     const EdgeSource& source(std::size_t e) {
         auto it = sources_.find(e);
         if (it == sources_.end()) {
-            it = sources_.emplace(e, source_of(in_.graph.edges[e], in_.fitted.edges[e], ways_)).first;
+            it = sources_.emplace(e, source_of(in_.graph.edges[e], in_.fitted.edges[e], ways_, prebuilt(e))).first;
         }
         return it->second;
     }

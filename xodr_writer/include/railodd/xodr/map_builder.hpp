@@ -21,6 +21,15 @@ struct MapInput {
     const geometry::FittedNetwork& fitted_roads;
     const geometry::Attachment& attachment;
     const geometry::Crossings& crossings;
+    // fitted_tracks indexed at 2 m, one per edge, where the caller already
+    // made them (to place the features): the map builder and the tagger use
+    // them instead of indexing every track again.
+    const std::vector<geometry::IndexedAlignment>* indexed = nullptr;
+
+    // The edge's prebuilt index, or null where there is none.
+    const geometry::IndexedAlignment* indexed_edge(std::size_t edge) const {
+        return indexed && indexed->size() == fitted_tracks.edges.size() ? &(*indexed)[edge] : nullptr;
+    }
 };
 
 struct MapOptions {

@@ -7,6 +7,7 @@
 // branch, over the crossing) is a junction connection with position,
 // heading and curvature continuous. Switches also get <railroad><switch>.
 #include "railodd/geometry/cant.hpp"
+#include "railodd/geometry/indexed_alignment.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/geometry/vertical_profile.hpp"
 #include "railodd/ingest/types.hpp"
@@ -26,6 +27,7 @@ struct RailInput {
     const std::vector<geometry::VerticalProfile>& profiles;          // per edge, or empty: flat
     const std::vector<std::vector<geometry::CantStretch>>& cants;    // per edge, or empty: none
     const std::vector<ingest::Way>& ways;                             // the track ways of the graph
+    const std::vector<geometry::IndexedAlignment>* indexed = nullptr; // fitted indexed at 2 m, if made already
 };
 
 struct RailOptions {
