@@ -268,6 +268,10 @@ int ConvertCommand::run() {
     odd::OddProfile along;
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
     const odd::OddProfile& profile = route ? along : network;
+    // The tracks' part of report.json while their indexes exist; then the
+    // indexes go.
+    timer.start("geometry_report");
+    nlohmann::ordered_json geometry_report = geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed);
     std::vector<geometry::IndexedAlignment>().swap(geo.indexed);
 
     // Phase 5: stage every output, then move them into place together. The
@@ -295,7 +299,7 @@ int ConvertCommand::run() {
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
     nlohmann::ordered_json report = make_report(result);
-    report["geometry"] = geometry::report_section(geo.tracks, geo.fitted_tracks);
+    report["geometry"] = std::move(geometry_report);
     report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
     report["cant"] = geometry::cants_report(geo.cants);
     report["topology"] = geometry::topology_report(geo.crossings, geo.attachment, result.features);

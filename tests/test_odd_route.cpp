@@ -4,6 +4,7 @@
 // mirrors it; unknown names are refused with the stations there are; and
 // `railodd convert --from --to` writes the route and its profile.
 #include "railodd/geometry/crossings.hpp"
+#include "railodd/geometry/dump.hpp"
 #include "railodd/geometry/feature_attachment.hpp"
 #include "railodd/geometry/profiles.hpp"
 #include "railodd/geometry/road_fit.hpp"
@@ -101,9 +102,10 @@ std::set<std::size_t> off_main_edges(const Fixture& f) {
     return edges;
 }
 
-TEST(OddRoute, PrebuiltTrackIndexesChangeNeitherMapNorProfile) {
+TEST(OddRoute, PrebuiltTrackIndexesChangeNoOutput) {
     // convert hands the indexes it made to place the features on to the map
-    // builder and the tagger; without them each indexes the tracks itself.
+    // builder, the tagger and the report; without them each indexes the
+    // tracks itself.
     const Fixture& f = fixture();
     const xodr::MapInput in{f.ingest, f.tracks,       f.fitted,     f.profiles,  f.cants,
                             f.roads,  f.fitted_roads, f.attachment, f.crossings, &f.indexed};
@@ -112,6 +114,7 @@ TEST(OddRoute, PrebuiltTrackIndexesChangeNeitherMapNorProfile) {
     const odd::OddProfile profile = odd::tag_route({in, build}, f.taxonomy);
     ASSERT_GT(profile.elements.size(), 50u);
     EXPECT_EQ(odd::to_json_text(profile), odd::to_json_text(f.profile));
+    EXPECT_EQ(geometry::report_section(f.tracks, f.fitted, &f.indexed), geometry::report_section(f.tracks, f.fitted));
 }
 
 TEST(OddRoute, SampletonToBrooksideRunsTheMainLine) {

@@ -39,12 +39,12 @@ struct Totals {
     std::size_t fallback = 0;
 };
 
-ordered_json track_entry(const GraphEdge& e, const FittedEdge& f, Totals& t) {
+ordered_json track_entry(const GraphEdge& e, const FittedEdge& f, const IndexedAlignment* indexed, Totals& t) {
     std::vector<Point> pts;
     for (const auto& n : e.nodes) {
         pts.push_back({n.xy.x, n.xy.y});
     }
-    const std::vector<double> d = distances(f.alignment, pts);
+    const std::vector<double> d = indexed ? distances(*indexed, pts) : distances(f.alignment, pts);
     t.d.insert(t.d.end(), d.begin(), d.end());
     t.length += length(f.alignment);
     return {{"edge", e.id},
@@ -79,11 +79,14 @@ ordered_json links_entry(const FittedNetwork& net) {
 
 } // namespace
 
-ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net) {
+ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
+                            const std::vector<IndexedAlignment>* indexed) {
     Totals t;
     ordered_json tracks = ordered_json::array();
-    for (const auto& f : net.edges) {
-        tracks.push_back(track_entry(graph.edges[f.edge], f, t));
+    const bool prebuilt = indexed && indexed->size() == net.edges.size();
+    for (std::size_t i = 0; i < net.edges.size(); ++i) {
+        const FittedEdge& f = net.edges[i];
+        tracks.push_back(track_entry(graph.edges[f.edge], f, prebuilt ? &(*indexed)[i] : nullptr, t));
     }
     std::sort(t.d.begin(), t.d.end());
     auto pct = [&](double q) {

@@ -312,11 +312,14 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
 } // namespace
 
 std::vector<double> distances(const Alignment& alignment, const std::vector<Point>& points) {
-    std::vector<double> d;
     if (points.empty()) {
-        return d;
+        return {};
     }
-    const IndexedAlignment ia(alignment, 2.0);
+    return distances(IndexedAlignment(alignment, 2.0), points);
+}
+
+std::vector<double> distances(const IndexedAlignment& ia, const std::vector<Point>& points) {
+    std::vector<double> d;
     d.reserve(points.size());
     for (const auto& p : points) {
         d.push_back(ia.project(p.x, p.y).distance);

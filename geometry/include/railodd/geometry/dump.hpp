@@ -2,6 +2,7 @@
 // What the geometry stage produced: report.json's "geometry" section (per
 // track residuals, primitive counts, link continuity) and a GeoJSON of the
 // fitted centrelines sampled back to WGS84.
+#include "railodd/geometry/indexed_alignment.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/ingest/projection.hpp"
 
@@ -9,10 +10,14 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace railodd::geometry {
 
-nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net);
+// `indexed`, where given: net's alignments indexed at 2 m, one per fitted
+// edge (convert made them to place the features), not indexed again here.
+nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
+                                      const std::vector<IndexedAlignment>* indexed = nullptr);
 
 void write_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
                    const char* layer, std::ostream& out);

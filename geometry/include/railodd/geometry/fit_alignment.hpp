@@ -3,6 +3,7 @@
 // clothoids and arcs with position, heading and curvature continuous (G2),
 // optionally starting and ending at given poses (links to other tracks).
 #include "railodd/geometry/alignment.hpp"
+#include "railodd/geometry/indexed_alignment.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -46,6 +47,8 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
 
 // Distance of every point to the alignment.
 std::vector<double> distances(const Alignment& alignment, const std::vector<Point>& points);
+// The same on an alignment already indexed (at 2 m: the same distances).
+std::vector<double> distances(const IndexedAlignment& alignment, const std::vector<Point>& points);
 
 // Distances of points to an alignment, summarised (used for residual reports).
 FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& points);
