@@ -172,9 +172,7 @@ BatchRoute read_route(const Reader& rd, const YAML::Node& node, const YAML::Node
     BatchRoute r;
     r.line = yaml::line_of(node);
     yaml::require(rd.file, node, static_cast<bool>(node["id"]), "a route needs an id");
-    r.id = yaml::scalar(rd.file, node["id"], "id");
-    yaml::require(rd.file, node["id"], std::regex_match(r.id, std::regex{"[A-Za-z0-9][A-Za-z0-9._-]*"}),
-                  "id '" + r.id + "' must be a folder name: letters, digits, '.', '_', '-'");
+    r.id = yaml::name(rd.file, node["id"], "route id");
     const YAML::Node input = pick(node, defaults, "input");
     yaml::require(rd.file, node, static_cast<bool>(input), "route '" + r.id + "' needs an input (or defaults: input)");
     r.spec["id"] = r.id;

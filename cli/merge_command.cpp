@@ -1,6 +1,9 @@
 #include "merge_command.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/input_file.hpp"
+#include "railodd/util/json_input.hpp"
+#include "railodd/util/file_names.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -40,10 +43,8 @@ namespace {
 // Parses a JSON file; with `keep`, only those top-level keys are built (an
 // odd_profile.json of a whole network is large, merge needs its summary).
 json read_json(const fs::path& path, const std::set<std::string>& keep = {}) {
+    require_input_file(path, "batch output");
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path.string(), "cannot open");
-    }
     json::parser_callback_t cb = [&keep](int depth, json::parse_event_t event, json& parsed) {
         return keep.empty() || depth != 1 || event != json::parse_event_t::key ||
                keep.contains(parsed.get<std::string>());
@@ -62,6 +63,9 @@ void require_format(const json& j, const fs::path& path, const char* format) {
     }
 }
 
+// `batch --shard I/N` takes N of at most six digits.
+constexpr long long max_shards = 999999;
+
 struct Summaries {
     std::vector<std::string> files;
     std::map<std::string, json> routes; // by id: sorted
@@ -70,8 +74,44 @@ struct Summaries {
     json first; // the first summary: the others must come from the same routes file
 };
 
-// Every batch_summary*.json of OUTROOT; one routes file, one shard count,
+// One batch summary: the same routes file and shard count as the first,
 // each route in one shard only.
+void add_summary(Summaries& s, std::map<std::string, std::string>& seen_in, const fs::path& p) {
+    const json j = read_json(p);
+    require_format(j, p, "batch_summary");
+    const json& shard = j.at("shard");
+    const auto count = shard.at("count").get<long long>();
+    const auto index = shard.at("index").get<long long>();
+    // --shard I/N takes N up to max_shards: a larger one is not railodd's.
+    if (count < 1 || count > max_shards || index < 0 || index >= count) {
+        throw InputError(p.string(), "shard " + std::to_string(index) + " of " + std::to_string(count) +
+                                         " is not a shard of a batch run");
+    }
+    if (s.files.empty()) {
+        s.first = j;
+        s.shard_count = static_cast<unsigned>(count);
+    } else if (j["routes_file_hash"] != s.first["routes_file_hash"] || count != s.shard_count) {
+        throw InputError(p.string(), "from a different routes file or shard count than " + s.files.front() +
+                                         " (remove stale summaries)");
+    }
+    s.files.push_back(p.filename().string());
+    s.shards.insert(static_cast<unsigned>(index));
+    for (const auto& r : j.at("routes")) {
+        const std::string id = r.at("id").get<std::string>();
+        if (!is_safe_name(id)) {
+            // It names the route's folder under OUTROOT, read next.
+            throw InputError(p.string(), "route id '" + id + "' is not a folder name: " + safe_name_rule);
+        }
+        r.value("status", std::string{}); // the types run() relies on, checked here where the file is known
+        r.value("scenarios", false);
+        if (!seen_in.emplace(id, p.filename().string()).second) {
+            throw InputError(p.string(), "route '" + id + "' is also in " + seen_in[id]);
+        }
+        s.routes[id] = r;
+    }
+}
+
+// Every batch_summary*.json of OUTROOT.
 Summaries read_summaries(const fs::path& root) {
     static const std::regex name(R"(batch_summary(\.shard-\d+-of-\d+)?\.json)");
     std::vector<fs::path> paths;
@@ -87,24 +127,7 @@ Summaries read_summaries(const fs::path& root) {
     Summaries s;
     std::map<std::string, std::string> seen_in;
     for (const auto& p : paths) {
-        const json j = read_json(p);
-        require_format(j, p, "batch_summary");
-        if (s.files.empty()) {
-            s.first = j;
-            s.shard_count = j["shard"].value("count", 0u);
-        } else if (j["routes_file_hash"] != s.first["routes_file_hash"] || j["shard"]["count"] != s.shard_count) {
-            throw InputError(p.string(), "from a different routes file or shard count than " + s.files.front() +
-                                             " (remove stale summaries)");
-        }
-        s.files.push_back(p.filename().string());
-        s.shards.insert(j["shard"].value("index", 0u));
-        for (const auto& r : j["routes"]) {
-            const std::string id = r.value("id", "");
-            if (!seen_in.emplace(id, p.filename().string()).second) {
-                throw InputError(p.string(), "route '" + id + "' is also in " + seen_in[id]);
-            }
-            s.routes[id] = r;
-        }
+        reading_json(p, [&] { add_summary(s, seen_in, p); });
     }
     return s;
 }
@@ -139,14 +162,16 @@ json merge_coverage(const fs::path& root, const std::vector<std::string>& ids) {
     long scenarios = 0;
     for (const auto& id : ids) {
         const fs::path p = root / id / "scenarios" / "coverage.json";
-        const json c = read_json(p);
-        require_format(c, p, "scenario_coverage");
-        if (!c.contains("route") || !c["route"].contains("elements") || !c.contains("exercised")) {
-            throw InputError(p.string(), "coverage without route elements or exercised items");
-        }
-        scenarios += c.value("scenarios", 0L);
-        route.add(c["route"]["elements"]);
-        exercised.add(c["exercised"]);
+        reading_json(p, [&] {
+            const json c = read_json(p);
+            require_format(c, p, "scenario_coverage");
+            if (!c.contains("route") || !c["route"].contains("elements") || !c.contains("exercised")) {
+                throw InputError(p.string(), "coverage without route elements or exercised items");
+            }
+            scenarios += c.value("scenarios", 0L);
+            route.add(c["route"]["elements"]);
+            exercised.add(c["exercised"]);
+        });
     }
     json out;
     out["routes"] = ids;
@@ -207,12 +232,14 @@ json merge_profiles(const fs::path& root, const std::vector<std::string>& ids) {
     json summary = json::object();
     for (const auto& id : ids) {
         const fs::path p = root / id / "odd_profile.json";
-        const json j = read_json(p, {"railodd", "summary"});
-        require_format(j, p, "odd_profile");
-        if (!j.contains("summary") || !j["summary"].is_object()) {
-            throw InputError(p.string(), "no summary object");
-        }
-        merge_summary(summary, j["summary"], p, "");
+        reading_json(p, [&] {
+            const json j = read_json(p, {"railodd", "summary"});
+            require_format(j, p, "odd_profile");
+            if (!j.contains("summary") || !j["summary"].is_object()) {
+                throw InputError(p.string(), "no summary object");
+            }
+            merge_summary(summary, j["summary"], p, "");
+        });
     }
     return {{"routes", ids}, {"summary", std::move(summary)}};
 }

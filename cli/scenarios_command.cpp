@@ -9,6 +9,7 @@
 #include "railodd/scenario/outputs.hpp"
 #include "railodd/scenario/templates.hpp"
 #include "railodd/util/errors.hpp"
+#include "railodd/util/file_names.hpp"
 #include "railodd/util/output_stage.hpp"
 
 #include <nlohmann/json.hpp>
@@ -19,6 +20,8 @@
 #include <optional>
 #include <regex>
 #include <set>
+#include <sstream>
+#include <string_view>
 
 namespace railodd::cli {
 
@@ -44,16 +47,40 @@ std::string map_date(const fs::path& xodr) {
     return std::regex_search(head, m, date) ? m[1].str() : "2026-01-01T00:00:00";
 }
 
+// The manifest of an earlier run in the output folder, or null: a file that
+// is not one (edited, damaged, a folder) only means nothing is removed.
+nlohmann::json old_manifest(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) {
+        return nullptr;
+    }
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+    return j.is_object() ? j : nullptr;
+}
+
+bool ends_with(const std::string& s, std::string_view tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
 // Scenario files of an earlier run in the same folder that this run did not
 // write again: removed, so the folder holds exactly what the manifest lists.
+// Only names railodd itself writes there are touched, whatever the old
+// manifest says.
 void remove_stale(const fs::path& out, const std::set<std::string>& kept, const nlohmann::json& old) {
-    if (!old.contains("scenarios")) {
+    if (!old.is_object() || !old.contains("scenarios") || !old["scenarios"].is_array()) {
         return;
     }
     for (const auto& s : old["scenarios"]) {
         for (const char* key : {"file", "behavior"}) {
-            const std::string name = s.value(key, "");
-            if (!name.empty() && !kept.contains(name) && name.find('/') == std::string::npos) {
+            if (!s.is_object() || !s.contains(key) || !s[key].is_string()) {
+                continue;
+            }
+            const std::string name = s[key].get<std::string>();
+            const bool ours = is_safe_name(name) && (ends_with(name, ".xosc") || ends_with(name, ".behavior.yaml"));
+            if (ours && !kept.contains(name)) {
                 std::error_code ec;
                 fs::remove(out / name, ec);
             }
@@ -91,6 +118,11 @@ void ScenariosCommand::setup() {
     }
     if (opt_.strategy == "random" && opt_.count == 0) {
         throw UsageError("--count", "the random strategy needs --count N (N > 0)");
+    }
+    if (opt_.count > scenario::max_count_per_template) {
+        throw UsageError("--count", std::to_string(opt_.count) + " is more than the " +
+                                        std::to_string(scenario::max_count_per_template) +
+                                        " scenarios per template railodd generates");
     }
     if (opt_.osc_version != "1.1" && opt_.osc_version != "1.2" && opt_.osc_version != "1.3") {
         throw UsageError("--osc-version", "'" + opt_.osc_version + "' is not 1.1, 1.2 or 1.3");
@@ -139,10 +171,7 @@ int ScenariosCommand::run() {
     // Write everything, then move it into place
     scenario::OutputInfo info{map_dir.string(), gen.map_file, taxonomy_file, catalog_file, templates_file,
                               opt_.odd_spec, gen.strategy, opt_.count, opt_.seed, osc_minor_, date};
-    nlohmann::json old;
-    if (std::ifstream in(out / "manifest.json"); in) {
-        old = nlohmann::json::parse(in, nullptr, false);
-    }
+    const nlohmann::json old = old_manifest(out / "manifest.json");
     scenario::write_scenario_set(stage, generation, coverage, profile, info);
     stage.commit();
     std::set<std::string> kept;
@@ -150,11 +179,16 @@ int ScenariosCommand::run() {
         kept.insert(s.scenario.id + ".xosc");
         kept.insert(s.scenario.id + ".behavior.yaml");
     }
-    if (!old.is_discarded()) {
-        remove_stale(out, kept, old);
-    }
+    remove_stale(out, kept, old);
     if (!opt_.quiet) {
         std::cout << scenario::coverage_table(coverage);
+    }
+    for (const auto& r : generation.runs) {
+        if (r.every_valid_row) {
+            std::cout << "template " << r.template_id << ": only " << r.rows
+                      << " distinct valid parameter rows exist, fewer than --count " << opt_.count
+                      << ": all of them generated\n";
+        }
     }
     std::cout << "wrote " << generation.scenarios.size() << " scenarios to " << opt_.out_dir << '\n';
     return exit_ok;

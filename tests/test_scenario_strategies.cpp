@@ -206,3 +206,36 @@ TEST(ScenarioStrategies, RandomRowsReturnsFewerWhenFewerExist) {
     EXPECT_EQ(sorted, full_factorial(sizes, valid)) << "all valid rows, each once";
     EXPECT_TRUE(random_rows(sizes, [](const Row&) { return false; }, 4, 3).empty());
 }
+
+// A count far above the combinations (2^31 asked, 5 exist) returns at once with
+// every valid row, and says so; the rows are those of the same seed's draws.
+TEST(ScenarioStrategies, RandomRowsCapsAHugeCountAtTheValidRows) {
+    const std::vector<std::size_t> sizes{2, 3};
+    const Validity valid = [](const Row& r) { return !(r[0] == 1 && r[1] == 2); };
+    bool all = false;
+    const auto rows = random_rows(sizes, valid, 2147483647u, 3, &all);
+    EXPECT_TRUE(all);
+    std::vector<Row> sorted = rows;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, full_factorial(sizes, valid));
+    EXPECT_EQ(random_rows(sizes, valid, 2147483647u, 3), rows) << "deterministic";
+    bool some = true;
+    EXPECT_EQ(random_rows(sizes, valid, 3, 3, &some).size(), 3u);
+    EXPECT_FALSE(some) << "3 of 5: not every valid row";
+}
+
+// Valid rows so sparse that rejection draws rarely hit them (3 of 200,000):
+// the draw is completed from the listed valid rows, not left short.
+TEST(ScenarioStrategies, RandomRowsCompletesSparseDrawsFromTheValidRows) {
+    const std::vector<std::size_t> sizes{200, 1000};
+    const Validity valid = [](const Row& r) {
+        return r.size() == 2 && r[0] != kUnset && r[1] != kUnset && r[0] == 7 && r[1] < 3;
+    };
+    bool all = false;
+    const auto rows = random_rows(sizes, valid, 2, 11, &all);
+    ASSERT_EQ(rows.size(), 2u);
+    expect_valid_rows(rows, sizes, valid);
+    EXPECT_FALSE(all);
+    EXPECT_EQ(random_rows(sizes, valid, 50, 11, &all).size(), 3u);
+    EXPECT_TRUE(all);
+}

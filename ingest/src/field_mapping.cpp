@@ -1,6 +1,7 @@
 #include "field_mapping.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/yaml_support.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -52,14 +53,7 @@ TagRule parse_rule(const std::string& file, const std::string& key, const YAML::
 FieldMapping load_field_mapping(const std::filesystem::path& path) {
     FieldMapping m;
     m.source = path.string();
-    YAML::Node root;
-    try {
-        root = YAML::LoadFile(m.source);
-    } catch (const YAML::BadFile&) {
-        throw InputError(m.source, "cannot open field mapping");
-    } catch (const YAML::Exception& e) {
-        throw InputError(m.source + ":" + std::to_string(e.mark.line + 1), "invalid YAML: " + e.msg);
-    }
+    const YAML::Node root = yaml::load_file(path, "field mapping");
     if (!root.IsMap()) {
         throw InputError(m.source, "field mapping must be a YAML map with a 'tags' entry");
     }

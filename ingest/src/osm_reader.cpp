@@ -5,12 +5,15 @@
 #include "local_frame.hpp"
 #include "osm_passes.hpp"
 #include "osm_relations.hpp"
+#include "pbf_strings.hpp"
 #include "road_selection.hpp"
 #include "segment_grid.hpp"
 #include "way_parts.hpp"
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/phase_timer.hpp"
+
+#include <osmium/io/file.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -110,6 +113,9 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
         throw InputError(file.string(), fs::exists(file, ec) ? "not a regular file" : "no such file");
+    }
+    if (osmium::io::File{file.string()}.format() == osmium::io::file_format::pbf) {
+        check_pbf_strings(file);
     }
     const Selection& sel = options.selection;
     PhaseTimer timer;

@@ -1,8 +1,29 @@
 #include "osm_scan.hpp"
 
+#include <cstring>
 #include <system_error>
 
 namespace railodd::ingest {
+
+void check_tag_list(const std::filesystem::path& file, const osmium::OSMObject& object) {
+    const osmium::TagList& tags = object.tags();
+    const char* p = reinterpret_cast<const char*>(tags.data()) + sizeof(osmium::TagList);
+    const char* end = reinterpret_cast<const char*>(tags.data()) + tags.byte_size();
+    std::size_t strings = 0;
+    while (p < end) {
+        const void* zero = std::memchr(p, '\0', static_cast<std::size_t>(end - p));
+        if (zero == nullptr) {
+            break;
+        }
+        p = static_cast<const char*>(zero) + 1;
+        ++strings;
+    }
+    if (p != end || strings % 2 != 0) {
+        throw InputError(file.string(), std::string{"OSM "} + osmium::item_type_to_name(object.type()) + " " +
+                                            std::to_string(object.id()) +
+                                            ": malformed tag list (a key or value holds a NUL byte)");
+    }
+}
 
 void rethrow_as_input_error(const std::filesystem::path& file, const std::string& pass) {
     try {

@@ -16,6 +16,12 @@ namespace railodd::ingest {
 // InputError naming the file.
 [[noreturn]] void rethrow_as_input_error(const std::filesystem::path& file, const std::string& pass);
 
+// Refuses an object whose tag list is not whole zero-terminated key/value
+// pairs within its bounds: libosmium walks tags with strlen, which runs past
+// the list when a string held a NUL (check_pbf_strings names such a string
+// up front; this guards every pass of every format).
+void check_tag_list(const std::filesystem::path& file, const osmium::OSMObject& object);
+
 template <typename Visitor>
 void scan_osm(const std::filesystem::path& file, osmium::osm_entity_bits::type types, const std::string& pass,
               Visitor&& visit) {
@@ -23,6 +29,7 @@ void scan_osm(const std::filesystem::path& file, osmium::osm_entity_bits::type t
         osmium::io::Reader reader{osmium::io::File{file.string()}, types, osmium::io::read_meta::no};
         while (osmium::memory::Buffer buffer = reader.read()) {
             for (auto& object : buffer.select<osmium::OSMObject>()) {
+                check_tag_list(file, object);
                 visit(object);
             }
         }

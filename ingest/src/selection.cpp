@@ -1,6 +1,7 @@
 #include "railodd/ingest/selection.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/input_file.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -99,14 +100,11 @@ void collect_rings(const json& geom, const std::string& file, std::vector<std::v
 } // namespace
 
 PolygonSelection load_polygon_geojson(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) {
-        throw InputError(file.string(), "cannot open polygon file");
-    }
+    const std::string text = read_input_file(file, "polygon file");
     PolygonSelection sel;
     sel.source = file.string();
     try {
-        collect_rings(json::parse(in), sel.source, sel.rings);
+        collect_rings(json::parse(text), sel.source, sel.rings);
     } catch (const json::exception& e) {
         throw InputError(sel.source, std::string{"invalid GeoJSON: "} + e.what());
     }

@@ -7,10 +7,12 @@
 #include "json_text.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/input_file.hpp"
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace railodd::odd {
 
@@ -98,6 +100,12 @@ const Json& required(const Json& j, const std::string& key, const std::string& w
 template <class T, class Json>
 T get(const Json& j, const std::string& key, const std::string& where) {
     const auto& v = required(j, key, where);
+    if constexpr (std::is_same_v<T, std::size_t>) {
+        // nlohmann would wrap -1 to 2^64-1 and cut 1.5 to 1: an index must be exact.
+        if (!v.is_number_unsigned()) {
+            throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": expected a count, not " + v.dump());
+        }
+    }
     try {
         return v.template get<T>();
     } catch (const nlohmann::json::exception&) { // shared by both specialisations
@@ -107,6 +115,9 @@ T get(const Json& j, const std::string& key, const std::string& where) {
 
 template <class T, class Json>
 T get_or(const Json& j, const std::string& key, const std::string& where, T fallback) {
+    if (!j.is_object()) {
+        throw std::invalid_argument((where.empty() ? "document" : where) + ": expected an object");
+    }
     return j.contains(key) ? get<T>(j, key, where) : fallback;
 }
 
@@ -256,6 +267,9 @@ OddProfile profile_from(const Json& j) {
         }
     }
     if (j.contains("summary")) {
+        if (!j["summary"].is_object()) {
+            throw std::invalid_argument("summary: expected an object");
+        }
         p.summary = nlohmann::ordered_json(j["summary"]);
     }
     return p;
@@ -268,18 +282,13 @@ OddProfile profile_from_json(const nlohmann::json& j) { return profile_from(j); 
 OddProfile profile_from_json(const nlohmann::ordered_json& j) { return profile_from(j); }
 
 OddProfile read_profile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw InputError(file.string(), std::filesystem::exists(file) ? "cannot be read" : "no such file");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::string text = read_input_file(file, "ODD profile");
     // Parsed keeping key order: attributes and the summary's classes stay in
     // the order the tagger wrote them (the taxonomy's bin order).
     nlohmann::ordered_json j;
     try {
-        j = nlohmann::ordered_json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
+        j = nlohmann::ordered_json::parse(text);
+    } catch (const nlohmann::json::exception& e) { // parse errors, and out_of_range for 1e999
         throw InputError(file.string(), std::string{"invalid JSON: "} + e.what());
     }
     try {

@@ -62,7 +62,7 @@ private:
     Asset asset(const YAML::Node& node) {
         yaml::require(file_, node, node.IsMap() && node["id"], "each asset needs an 'id'");
         Asset a;
-        a.id = yaml::scalar(file_, node["id"], "'id'");
+        a.id = yaml::name(file_, node["id"], "asset id");
         a.line = yaml::line_of(node);
         const std::string what = "asset '" + a.id + "'";
         yaml::check_keys(file_, node,

@@ -75,12 +75,17 @@ Validity validity(const TemplateContext& ctx) {
     };
 }
 
-std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity& valid, const GenerateOptions& o) {
+std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity& valid, const GenerateOptions& o,
+                          const std::string& where, TemplateRun& run) {
     std::vector<Row> rows;
-    switch (o.strategy) {
-    case Strategy::full: rows = full_factorial(sizes, valid); break;
-    case Strategy::pairwise: rows = pairwise(sizes, valid); break;
-    case Strategy::random: rows = random_rows(sizes, valid, o.count, o.seed); break;
+    try {
+        switch (o.strategy) {
+        case Strategy::full: rows = full_factorial(sizes, valid); break;
+        case Strategy::pairwise: rows = pairwise(sizes, valid); break;
+        case Strategy::random: rows = random_rows(sizes, valid, o.count, o.seed, &run.every_valid_row); break;
+        }
+    } catch (const std::length_error& e) {
+        throw InputError(where, std::string{e.what()} + " (use --strategy pairwise or random, or --max-anchors)");
     }
     if (o.count > 0 && rows.size() > o.count) {
         rows.resize(o.count);
@@ -123,7 +128,8 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
         }
         prepare(ctx);
         const Validity valid = validity(ctx);
-        const std::vector<Row> rows = rows_for(run.sizes, valid, options);
+        const std::string where = templates.source + (t.line > 0 ? ":" + std::to_string(t.line) : "");
+        const std::vector<Row> rows = rows_for(run.sizes, valid, options, where + ": template '" + t.id + "'", run);
         run.rows = rows.size();
         run.pairs = pair_coverage(run.sizes, valid, rows);
         for (std::size_t n = 0; n < rows.size(); ++n) {

@@ -98,6 +98,10 @@ ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const O
     for (const auto& r : g.runs) {
         templates.push_back({{"id", r.template_id}, {"anchors", r.anchors}, {"anchors_skipped", r.skipped.size()},
                              {"scenarios", r.rows}, {"distribution", "distributions/" + r.template_id + ".xosc"}});
+        if (r.every_valid_row) {
+            // --count asked for more than exist: the reader sees why there are fewer.
+            templates.back()["all_valid_rows"] = true;
+        }
     }
     j["templates"] = std::move(templates);
     ojson scenarios = ojson::array();

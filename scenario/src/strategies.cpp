@@ -7,6 +7,7 @@
 #include "railodd/scenario/strategies.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -208,10 +209,26 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
 }
 
 std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t count,
-                             std::uint64_t seed) {
+                             std::uint64_t seed, bool* every_valid_row) {
     std::vector<Row> rows;
+    if (every_valid_row) {
+        *every_valid_row = false;
+    }
     if (empty_domain(sizes) || count == 0) {
         return rows;
+    }
+    double product = 1.0;
+    for (const auto s : sizes) {
+        product *= static_cast<double>(s);
+    }
+    // Where the request comes near the number of combinations, rejection
+    // draws mostly collide: the valid rows are listed first, so the count is
+    // capped at them and the draw completed from them (never unbounded).
+    const bool enumerable = product <= static_cast<double>(random_enumeration_limit);
+    std::optional<std::vector<Row>> all;
+    if (enumerable && static_cast<double>(count) * 8.0 >= product) {
+        all = full_factorial(sizes, valid, random_enumeration_limit);
+        count = std::min(count, all->size());
     }
     std::mt19937_64 rng(seed);
     // Index draws by rejection, not std::uniform_int_distribution, whose
@@ -225,7 +242,7 @@ std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validi
         return static_cast<std::size_t>(x % n);
     };
     std::set<Row> seen;
-    const std::size_t attempts = 1000 * count;
+    const std::size_t attempts = count > random_attempt_limit / 1000 ? random_attempt_limit : 1000 * count;
     for (std::size_t a = 0; a < attempts && rows.size() < count; ++a) {
         Row r(sizes.size());
         for (std::size_t k = 0; k < sizes.size(); ++k) {
@@ -234,6 +251,25 @@ std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validi
         if (valid(r) && seen.insert(r).second) {
             rows.push_back(std::move(r));
         }
+    }
+    if (rows.size() < count && enumerable) {
+        // The draws fell short: complete from the rows not drawn, in seeded order.
+        if (!all) {
+            all = full_factorial(sizes, valid, random_enumeration_limit);
+        }
+        std::vector<Row> rest;
+        for (auto& r : *all) {
+            if (!seen.contains(r)) {
+                rest.push_back(std::move(r));
+            }
+        }
+        for (std::size_t i = 0; i < rest.size() && rows.size() < count; ++i) {
+            std::swap(rest[i], rest[i + draw(rest.size() - i)]);
+            rows.push_back(std::move(rest[i]));
+        }
+    }
+    if (every_valid_row && all) {
+        *every_valid_row = rows.size() == all->size();
     }
     return rows;
 }

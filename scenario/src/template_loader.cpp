@@ -50,7 +50,7 @@ private:
     Template one(const YAML::Node& node) {
         yaml::require(file_, node, node.IsMap() && node["id"], "each template needs an 'id'");
         Template t;
-        t.id = yaml::scalar(file_, node["id"], "'id'");
+        t.id = yaml::name(file_, node["id"], "template id");
         t.line = yaml::line_of(node);
         const std::string what = "template '" + t.id + "'";
         yaml::check_keys(file_, node,

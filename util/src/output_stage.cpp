@@ -32,6 +32,13 @@ OutputStage::~OutputStage() {
 
 fs::path OutputStage::staged_path(std::string_view name) {
     std::string n{name};
+    // Names come from inputs (template ids, ...): whatever their loaders
+    // checked, nothing is written outside the output folder.
+    const fs::path rel = fs::path{n}.lexically_normal();
+    if (n.empty() || rel.has_root_path() || rel.empty() || *rel.begin() == ".." || *rel.begin() == "." ||
+        rel.filename().empty()) {
+        throw InputError((outdir_ / n).string(), "output name '" + n + "' is not a file inside the output folder");
+    }
     {
         const std::lock_guard<std::mutex> lock(names_mutex_);
         if (std::find(names_.begin(), names_.end(), n) == names_.end()) {

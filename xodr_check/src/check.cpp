@@ -3,6 +3,7 @@
 #include "checks.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/input_file.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -68,20 +69,7 @@ CheckResult check_text(const std::string& xml, const std::string& name, const Li
 }
 
 CheckResult check_file(const std::filesystem::path& file, const Limits& limits) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) {
-        throw InputError(file.string(), std::filesystem::exists(file, ec) ? "not a regular file" : "no such file");
-    }
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw InputError(file.string(), "cannot be opened for reading");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) {
-        throw InputError(file.string(), "read error");
-    }
-    return check_text(text.str(), file.string(), limits);
+    return check_text(read_input_file(file, "OpenDRIVE map"), file.string(), limits);
 }
 
 } // namespace railodd::xodr_check

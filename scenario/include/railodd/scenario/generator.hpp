@@ -55,6 +55,7 @@ struct TemplateRun {
     std::vector<std::string> dimensions;  // "anchor", then the varied parameters
     std::vector<std::size_t> sizes;
     std::size_t rows = 0;
+    bool every_valid_row = false; // random: fewer valid rows than --count, all of them taken
     PairStats pairs;
 };
 

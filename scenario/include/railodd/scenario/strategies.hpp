@@ -38,9 +38,18 @@ std::vector<Row> full_factorial(const std::vector<std::size_t>& sizes, const Val
 std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity& valid);
 
 // `count` distinct valid rows drawn uniformly with a 64-bit Mersenne Twister
-// seeded with `seed` (fewer when fewer exist); the same on every platform.
+// seeded with `seed`; the same on every platform. Fewer when fewer exist: up
+// to random_enumeration_limit combinations the valid rows are listed, the
+// count is capped at them and `every_valid_row` tells when all were returned;
+// beyond, at most random_attempt_limit draws are made. A shorter draw with the
+// same seed is a prefix of a longer one.
+inline constexpr std::size_t random_enumeration_limit = 1000000;
+inline constexpr std::size_t random_attempt_limit = 20000000;
 std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t count,
-                             std::uint64_t seed);
+                             std::uint64_t seed, bool* every_valid_row = nullptr);
+
+// The most scenarios per template `--count` may ask for.
+inline constexpr std::size_t max_count_per_template = 100000;
 
 // Pairs covered by `rows` against the feasible pairs.
 PairStats pair_coverage(const std::vector<std::size_t>& sizes, const Validity& valid, const std::vector<Row>& rows);

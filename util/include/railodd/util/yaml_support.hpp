@@ -3,6 +3,8 @@
 // templates); include only from targets that link yaml-cpp. Every refusal is
 // an InputError "FILE:LINE: problem", the line taken from the node's Mark.
 #include "railodd/util/errors.hpp"
+#include "railodd/util/file_names.hpp"
+#include "railodd/util/input_file.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -29,10 +31,9 @@ inline std::string where(const std::string& file, const YAML::Node& node) {
 
 inline YAML::Node load_file(const std::filesystem::path& path, const std::string& what) {
     const std::string file = path.string();
+    const std::string text = read_input_file(path, what);
     try {
-        return YAML::LoadFile(file);
-    } catch (const YAML::BadFile&) {
-        throw InputError(file, "cannot open " + what);
+        return YAML::Load(text);
     } catch (const YAML::Exception& e) {
         throw InputError(file + ":" + std::to_string(e.mark.line + 1), "invalid YAML in " + what + ": " + e.msg);
     }
@@ -58,6 +59,16 @@ inline std::string scalar(const std::string& file, const YAML::Node& node, const
         fail(file, node, what + " must be a single value");
     }
     return node.Scalar();
+}
+
+// A scalar that becomes part of a file name (an id): refused unless it is a
+// safe name, so that no input can write outside the output folder.
+inline std::string name(const std::string& file, const YAML::Node& node, const std::string& what) {
+    auto text = scalar(file, node, what);
+    if (!is_safe_name(text)) {
+        fail(file, node, what + " '" + text + "' cannot be used in a file name: " + safe_name_rule);
+    }
+    return text;
 }
 
 inline double number(const std::string& file, const YAML::Node& node, const std::string& what) {

@@ -1,0 +1,267 @@
+// Hostile input, as a user can pass it, through the real executable: each row
+// is a file or option that once crashed railodd, escaped the output folder,
+// ran without bound or reported bad input as an internal error (exit 4). The
+// rule each row checks: exit 1 (usage) or 2 (input) with a message naming the
+// file and the problem, and nothing written where it must not be.
+#include "pbf_test_support.hpp"
+#include "test_support.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string_view>
+#include <vector>
+
+#include <unistd.h>
+
+using namespace railodd::test;
+using namespace std::string_literals;
+
+namespace {
+
+CommandResult run_railodd(const std::string& args) { return run_command(std::string{RAILODD_BIN} + " " + args); }
+
+const fs::path data_dir = fs::path{RAILODD_SOURCE_DIR} / "data";
+
+class CliHostileInput : public ::testing::Test {
+protected:
+    // One folder per process: CTest runs each test in its own process.
+    static fs::path root() {
+        return fs::temp_directory_path() / "railodd-tests" / ("CliHostileInput-" + std::to_string(::getpid()));
+    }
+    static fs::path map() { return root() / "map"; }
+
+    static void SetUpTestSuite() {
+        fs::remove_all(root());
+        fs::create_directories(root());
+        const auto s = run_railodd("sample -o " + quoted(root() / "sample"));
+        ASSERT_EQ(s.exit_code, 0) << s.output;
+        const auto c = run_railodd("convert " + quoted(root() / "sample" / "sample_route.osm") + " -o " + quoted(map()));
+        ASSERT_EQ(c.exit_code, 0) << c.output;
+    }
+    static void TearDownTestSuite() { fs::remove_all(root()); }
+
+    // The shipped templates with the first id replaced.
+    static std::string templates_with_id(const std::string& id) {
+        std::string t = read_file(data_dir / "scenario" / "templates.yaml");
+        const std::string first = "- id: curve_crossing_street_vehicle";
+        const auto at = t.find(first);
+        EXPECT_NE(at, std::string::npos);
+        return t.replace(at, first.size(), "- id: " + id);
+    }
+};
+
+struct Expect {
+    int exit_code;
+    std::vector<std::string> says; // each in the output
+};
+
+void expect_refusal(const CommandResult& r, const Expect& e) {
+    EXPECT_EQ(r.exit_code, e.exit_code) << r.output;
+    for (const auto& s : e.says) {
+        EXPECT_NE(r.output.find(s), std::string::npos) << "missing '" << s << "' in: " << r.output;
+    }
+    EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+}
+
+// Files of the folder, recursively, as relative paths.
+std::vector<std::string> listing(const fs::path& dir) {
+    std::vector<std::string> out;
+    if (!fs::exists(dir)) {
+        return out;
+    }
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+        out.push_back(fs::relative(e.path(), dir).string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+} // namespace
+
+// --- 1. bytes libosmium would walk past -----------------------------------
+
+TEST_F(CliHostileInput, PbfWithNulInATagKeyIsRefusedNamingTheWay) {
+    PbfBuilder b;
+    b.nodes = {{1, 10.0, 48.0, {}}, {2, 10.002, 48.0, {}}, {3, 10.004, 48.0, {}}};
+    b.ways = {{77, {{"railway", "rail"}, {"na\0me"s, "x"}}, {1, 2, 3}}};
+    const auto dir = scratch_dir();
+    b.write(dir / "nul.osm.pbf");
+    const auto r = run_railodd("convert " + quoted(dir / "nul.osm.pbf") + " -o " + quoted(dir / "out"));
+    expect_refusal(r, {2, {"nul.osm.pbf", "OSM way 77", "NUL byte"}});
+    EXPECT_FALSE(fs::exists(dir / "out" / "map.xodr"));
+}
+
+TEST_F(CliHostileInput, PbfWithNulInADenseNodeValueIsRefusedNamingTheNode) {
+    PbfBuilder b;
+    b.nodes = {{1, 10.0, 48.0, {}}, {2, 10.002, 48.0, {{"railway", "sig\0nal"s}}}, {3, 10.004, 48.0, {}}};
+    b.ways = {{77, {{"railway", "rail"}}, {1, 2, 3}}};
+    const auto dir = scratch_dir();
+    b.write(dir / "nul.osm.pbf");
+    const auto r = run_railodd("convert " + quoted(dir / "nul.osm.pbf") + " -o " + quoted(dir / "out"));
+    expect_refusal(r, {2, {"nul.osm.pbf", "OSM node 2", "tag value holds a NUL byte"}});
+}
+
+// --- 2. names that become file names ---------------------------------------
+
+TEST_F(CliHostileInput, TemplateIdThatIsAnAbsolutePathIsRefused) {
+    const auto dir = scratch_dir();
+    const fs::path target = dir / "elsewhere" / "pwned";
+    const auto templates = write_file(dir / "t.yaml", templates_with_id(target.string()));
+    const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen") + " --templates " +
+                               quoted(templates));
+    expect_refusal(r, {2, {templates.string() + ":", "template id", "cannot be used in a file name"}});
+    EXPECT_TRUE(listing(dir / "elsewhere").empty());
+    EXPECT_FALSE(fs::exists(dir / "scen" / "manifest.json"));
+}
+
+TEST_F(CliHostileInput, TemplateIdWithDotDotIsRefused) {
+    const auto dir = scratch_dir();
+    for (const std::string& id : std::vector<std::string>{"../dotdot", "..", ".", ".hidden", "a/b", "-option", std::string(101, 'x')}) {
+        const auto templates = write_file(dir / "t.yaml", templates_with_id("'" + id + "'"));
+        const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen" / "inner") +
+                                   " --templates " + quoted(templates));
+        SCOPED_TRACE(id);
+        expect_refusal(r, {2, {"t.yaml:", "cannot be used in a file name"}});
+    }
+    EXPECT_EQ(listing(dir), (std::vector<std::string>{"t.yaml"})) << "refused before any output folder is made";
+}
+
+TEST_F(CliHostileInput, AssetIdWithSlashIsRefused) {
+    const auto dir = scratch_dir();
+    std::string assets = read_file(data_dir / "scenario" / "assets.yaml");
+    assets.replace(assets.find("- id: regional_emu"), 18, "- id: ../regional_emu");
+    const auto catalog = write_file(dir / "assets.yaml", assets);
+    const auto r =
+        run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen") + " --catalog " + quoted(catalog));
+    expect_refusal(r, {2, {catalog.string() + ":", "asset id '../regional_emu'"}});
+}
+
+TEST_F(CliHostileInput, MergedRouteIdThatLeavesTheFolderIsRefused) {
+    const auto dir = scratch_dir();
+    write_file(dir / "batch_summary.json",
+               R"({"railodd": {"format": "batch_summary", "format_version": 1}, "routes_file": "r.yaml",
+                   "routes_file_hash": "0", "routes_total": 1, "shard": {"index": 0, "count": 1},
+                   "routes": [{"id": "../../etc", "status": "ok", "scenarios": false}]})");
+    expect_refusal(run_railodd("merge " + quoted(dir)), {2, {"batch_summary.json", "route id '../../etc'"}});
+}
+
+// --- 3. unbounded runs -------------------------------------------------------
+
+TEST_F(CliHostileInput, RandomCountAboveTheLimitIsAUsageError) {
+    const auto dir = scratch_dir();
+    const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen") +
+                               " --strategy random --count 2147483647");
+    expect_refusal(r, {1, {"--count", "100000"}});
+    EXPECT_FALSE(fs::exists(dir / "scen"));
+}
+
+TEST_F(CliHostileInput, RandomCountAboveTheFeasibleRowsIsCappedAndSaysSo) {
+    const auto dir = scratch_dir();
+    const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen") +
+                               " --strategy random --count 100000 --seed 3 -q");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("distinct valid parameter rows exist, fewer than --count 100000"), std::string::npos)
+        << r.output;
+    const auto manifest = nlohmann::json::parse(read_file(dir / "scen" / "manifest.json"));
+    std::size_t capped = 0;
+    for (const auto& t : manifest["templates"]) {
+        EXPECT_LT(t["scenarios"].get<std::size_t>(), 100000u);
+        capped += t.value("all_valid_rows", false) ? 1 : 0;
+    }
+    EXPECT_GT(capped, 0u);
+}
+
+// --- 4. input errors, not internal ones --------------------------------------
+
+TEST_F(CliHostileInput, DirectoryWhereAFileIsExpected) {
+    const auto dir = scratch_dir();
+    const fs::path d = dir / "a_folder";
+    fs::create_directories(d);
+    const std::string scen = "scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {scen + " --catalog " + quoted(d), "is a directory, not a file (asset catalog)"},
+        {scen + " --templates " + quoted(d), "is a directory, not a file (template file)"},
+        {scen + " --odd-spec " + quoted(d), "is a directory, not a file (ODD spec)"},
+        {scen + " --taxonomy " + quoted(d), "is a directory, not a file (ODD taxonomy)"},
+        {"profile " + quoted(map()) + " --odd-spec " + quoted(d), "is a directory, not a file (ODD spec)"},
+        {"convert " + quoted(root() / "sample" / "sample_route.osm") + " -o " + quoted(dir / "out") + " --polygon " +
+             quoted(d),
+         "is a directory, not a file (polygon file)"},
+        {"batch " + quoted(d) + " -o " + quoted(dir / "batch"), "is a directory, not a file (routes file)"},
+        {"validate " + quoted(d), "is a directory, not a file (OpenDRIVE map)"},
+    };
+    for (const auto& [args, says] : cases) {
+        SCOPED_TRACE(args);
+        expect_refusal(run_railodd(args), {2, {d.string(), says}});
+    }
+    EXPECT_FALSE(fs::exists(dir / "out" / "map.xodr"));
+}
+
+// Hand-edited odd_profile.json: every reader of it says which file and
+// where, whatever the values hold.
+TEST_F(CliHostileInput, OddProfileWithWrongTypesOrHugeNumbers) {
+    const std::string good = read_file(map() / "odd_profile.json");
+    struct Edit {
+        std::string from, to;
+    };
+    const std::vector<Edit> edits = {
+        {R"("length_m":)", R"("length_m": "long", "x":)"},
+        {R"("length_m":)", R"("length_m": 1e999, "x":)"},
+        {R"("elements": [)", R"("elements": {"a": 1}, "y": [)"},
+        {R"("road_id":)", R"("road_id": 12, "x":)"},
+        {R"("s_start":)", R"("s_start": [], "x":)"},
+        {R"("track":)", R"("track": "one", "x":)"},
+        {R"("summary":)", R"("summary": [1, 2], "x":)"},
+        {R"("taxonomy": {)", R"("taxonomy": 7, "t": {)"},
+    };
+    const auto dir = scratch_dir();
+    fs::copy_file(map() / "map.xodr", dir / "map.xodr");
+    for (const auto& e : edits) {
+        SCOPED_TRACE(e.to);
+        std::string text = good;
+        const auto at = text.find(e.from);
+        ASSERT_NE(at, std::string::npos);
+        text.replace(at, e.from.size(), e.to);
+        write_file(dir / "odd_profile.json", text);
+        for (const std::string cmd : {"profile " + quoted(dir), "profile --json " + quoted(dir),
+                                      "scenarios --map " + quoted(dir) + " -o " + quoted(dir / "scen")}) {
+            const auto r = run_railodd(cmd);
+            SCOPED_TRACE(cmd);
+            expect_refusal(r, {2, {"odd_profile.json"}});
+        }
+    }
+}
+
+TEST_F(CliHostileInput, BatchSummaryWithWrongTypesIsAnInputError) {
+    const std::string head = R"({"railodd": {"format": "batch_summary", "format_version": 1}, "routes_file": "r.yaml",
+                                 "routes_file_hash": "0", "routes_total": 1, )";
+    const std::vector<std::pair<std::string, std::string>> bodies = {
+        {R"("shard": 3, "routes": [])", "/shard"},
+        {R"("shard": {"index": "0", "count": 1}, "routes": [])", "/shard/index"},
+        {R"("shard": {"index": 0, "count": 1e999}, "routes": [])", "not valid JSON"},
+        {R"("shard": {"index": 0, "count": 4294967295}, "routes": [])", "not a shard of a batch run"},
+        {R"("shard": {"index": 0, "count": 1}, "routes": 5)", "/routes"},
+        {R"("shard": {"index": 0, "count": 1}, "routes": [{"id": 5}])", "/routes/0/id"},
+        {R"("shard": {"index": 0, "count": 1}, "routes": [{"id": "a", "status": 1}])", "/routes/0/status"},
+    };
+    const auto dir = scratch_dir();
+    for (const auto& [body, says] : bodies) {
+        SCOPED_TRACE(body);
+        write_file(dir / "batch_summary.json", head + body + "}");
+        expect_refusal(run_railodd("merge " + quoted(dir) + " -o " + quoted(dir / "merged.json")),
+                       {2, {"batch_summary.json", says}});
+    }
+}
+
+TEST_F(CliHostileInput, StaleManifestWithWrongTypesDoesNotStopAScenarioRun) {
+    const auto dir = scratch_dir();
+    fs::create_directories(dir / "scen");
+    write_file(dir / "scen" / "keep.txt", "mine");
+    write_file(dir / "scen" / "manifest.json",
+               R"({"scenarios": [{"file": 5}, {"file": ".."}, {"file": "keep.txt"}, 7, {"behavior": ["x"]}]})");
+    const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen") + " -q");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "scen" / "keep.txt")) << "only .xosc / .behavior.yaml files are railodd's to remove";
+    EXPECT_TRUE(fs::exists(dir)) << r.output;
+}
