@@ -1,4 +1,5 @@
 #include "batch_command.hpp"
+#include "option_checks.hpp"
 
 #include "batch_routes.hpp"
 #include "batch_runner.hpp"
@@ -26,7 +27,7 @@ using json = nlohmann::ordered_json;
 CLI::App* BatchCommand::add(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand("batch", "Convert many routes from a routes file in parallel (docs/batch.md)");
     app->add_option("ROUTES", opt_.routes_file, "Routes file (YAML): ids, inputs, selections, options")->required();
-    app->add_option("-o,--output", opt_.outroot, "Output root: one folder per route id")->required();
+    app->add_option("-o,--output", opt_.outroot, "Output root: one folder per route id")->required()->check(non_empty_path);
     app->add_option("-j,--jobs", opt_.jobs, "Routes run at once (default: hardware threads)")
         ->check(CLI::Range(1u, 4096u));
     app->add_option("--shard", opt_.shard, "Run only shard I of N (I/N, 0-based: routes k with k mod N = I)")

@@ -1,4 +1,5 @@
 #include "convert_command.hpp"
+#include "option_checks.hpp"
 
 #include "railodd/geometry/dump.hpp"
 #include "railodd/geometry/profiles.hpp"
@@ -26,6 +27,8 @@
 #include <future>
 #include <optional>
 #include <filesystem>
+#include <regex>
+#include <set>
 #include <iostream>
 
 namespace railodd::cli {
@@ -36,7 +39,7 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand("convert", "Convert an OSM extract (or GIS vector file) of a route");
     app->add_option("INPUT", opt_.input, ".osm, .osm.pbf, .osm.bz2, .osm.gz, .opl; or .geojson/.gpkg/.shp with --field-mapping")
         ->required();
-    app->add_option("-o,--output", opt_.outdir, "Output directory")->required();
+    app->add_option("-o,--output", opt_.outdir, "Output directory")->required()->check(non_empty_path);
     app->add_option("--bbox", opt_.bbox, "Select by bounding box W,S,E,N (degrees)");
     app->add_option("--polygon", opt_.polygon, "Select by a GeoJSON (Multi)Polygon file");
     app->add_option("--relation", opt_.relation,
@@ -46,23 +49,32 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--node-noise", opt_.node_noise_m,
                     "Expected scatter (m) of mapped track nodes about the true centreline; the fit's model selection scale")
         ->capture_default_str()
-        ->check(CLI::Range(0.01, 5.0));
+        ->check(finite_range(0.01, 5.0));
     app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(finite_range(0.0, 10000.0));
     app->add_option("--feature-distance", opt_.feature_distance_m,
                     "Keep point features and platforms within this many metres of a track")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(finite_range(0.0, 10000.0));
     app->add_option("--station-distance", opt_.station_distance_m, "Keep stations and halts within this many metres")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
-    app->add_option("--threads", opt_.threads, "Threads decoding PBF, fitting tracks and writing outputs (default: one per hardware thread; outputs do not depend on it)");
+        ->check(finite_range(0.0, 10000.0));
+    app->add_option("--threads", opt_.threads, "Threads decoding PBF, fitting tracks and writing outputs (default: one per hardware thread; outputs do not depend on it)")
+        ->check(unsigned_integer);
     app->add_flag("--estimate-cant", opt_.estimate_cant,
                   "Estimate equilibrium cant from maxspeed and radius where railway:cant is not mapped (max 160 mm)");
     app->add_option("--odr-version", opt_.odr_version, "OpenDRIVE revision of map.xodr: 1.6, 1.7 or 1.8")
         ->capture_default_str()
         ->check(CLI::IsMember({"1.6", "1.7", "1.8"}));
+    app->add_option("--date", opt_.date,
+                    "The map's date, YYYY-MM-DDTHH:MM:SS[Z] (default: the OSM file's replication timestamp, else none)")
+        ->check(CLI::Validator(
+            [](std::string& d) -> std::string {
+                static const std::regex iso(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ?)");
+                return std::regex_match(d, iso) ? std::string{} : "'" + d + "' is not YYYY-MM-DDTHH:MM:SS[Z]";
+            },
+            "DATE"));
     app->add_option("--taxonomy", opt_.taxonomy, "ODD taxonomy for odd_profile.* (default: data/odd/railway_odd.yaml)");
     app->add_option("--from", opt_.from, "Profile the route from this station (with --to; shortest path)");
     app->add_option("--to", opt_.to, "Profile the route to this station (with --from)");
@@ -122,11 +134,43 @@ nlohmann::ordered_json timings_json(const std::vector<std::pair<std::string, dou
     return t;
 }
 
-void print_summary(const ingest::IngestResult& r, const std::vector<fs::path>& written) {
+// The track ways with at least one stretch written to the map; the others
+// are in report.json (ingest's "dropped", the map's "tracks_not_written").
+std::size_t ways_in_map(const geometry::TrackGraph& tracks, const xodr::RailNetwork& rail) {
+    std::set<std::int64_t> ways;
+    for (std::size_t e = 0; e < tracks.edges.size() && e < rail.pieces.size(); ++e) {
+        if (!rail.pieces[e].empty()) {
+            for (const auto& w : tracks.edges[e].ways) {
+                ways.insert(w.way_id);
+            }
+        }
+    }
+    return ways.size();
+}
+
+// A map without a single rail road is no map (the ASAM schema requires a
+// road): refused, saying why, before anything is written.
+void require_rail_roads(const std::string& input, const xodr::MapBuild& map) {
+    bool any = false;
+    for (const auto& p : map.rail.pieces) {
+        any = any || !p.empty();
+    }
+    if (any) {
+        return;
+    }
+    std::string why;
+    for (std::size_t i = 0; i < map.rail.unwritten.size() && i < 3; ++i) {
+        why += (i ? "; " : "") + map.rail.unwritten[i].reason;
+    }
+    throw InputError(input, "no track could be written to the map" + (why.empty() ? "" : " (" + why + ")"));
+}
+
+void print_summary(const ingest::IngestResult& r, std::size_t in_map, const std::vector<fs::path>& written) {
     const auto& c = r.counts;
     std::cout << "railodd convert: " << r.source << " (" << r.selection << ")\n"
-              << "  track ways: " << c.output_track_ways << " of " << c.input_track_ways << " in output, "
-              << (c.input_track_ways - c.output_track_ways) << " dropped\n"
+              << "  track ways: " << in_map << " of " << c.input_track_ways << " in the map, "
+              << (c.input_track_ways - c.output_track_ways) << " dropped at ingest, "
+              << (c.output_track_ways - in_map) << " not written (report.json)\n"
               << "  road ways:  " << c.output_road_ways << " of " << c.input_road_ways << "\n"
               << "  features:   " << c.output_features << " of " << c.input_features << "\n";
     for (const auto& p : written) {
@@ -167,20 +211,15 @@ std::filesystem::path taxonomy_path(const std::string& option) {
                           : std::filesystem::path{option};
 }
 
-// The input file's modification time, UTC: the map's date, stable across reruns.
-std::string input_date(const std::string& input) {
-    std::error_code ec;
-    const auto t = fs::last_write_time(input, ec);
-    if (ec) {
-        return {};
+// The map's date: --date, else the data's own (the OSM file header's
+// replication timestamp), else none. Never the file's mtime, which changes
+// with every copy: the same data gives the same map on every machine.
+std::string map_date(const std::string& option, const ingest::IngestResult& r) {
+    std::string d = option.empty() ? r.timestamp : option;
+    if (!d.empty() && d.back() != 'Z') {
+        d += 'Z';
     }
-    const auto sys = std::chrono::file_clock::to_sys(t);
-    const std::time_t tt = std::chrono::system_clock::to_time_t(sys);
-    std::tm tm{};
-    gmtime_r(&tt, &tm);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return buf;
+    return d;
 }
 
 Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files, double node_noise_m,
@@ -257,8 +296,9 @@ int ConvertCommand::run() {
     xodr::MapOptions mo;
     mo.revision = xodr::parse_revision(opt_.odr_version);
     mo.name = fs::path(opt_.input).filename().string();
-    mo.date = input_date(opt_.input);
+    mo.date = map_date(opt_.date, result);
     xodr::MapBuild map = xodr::build_map(map_input, mo);
+    require_rail_roads(opt_.input, map);
     // Phase 4: ODD tags on every stretch and point of track, also carried
     // into the map's <userData>.
     timer.start("odd_tagging");
@@ -312,7 +352,7 @@ int ConvertCommand::run() {
         report["timings_s"] = timings_json(result.timings);
     }
     stage.write_text("report.json", report.dump(2) + "\n");
-    print_summary(result, stage.commit());
+    print_summary(result, ways_in_map(geo.tracks, map.rail), stage.commit());
     return exit_ok;
 }
 

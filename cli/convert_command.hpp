@@ -13,6 +13,7 @@ namespace railodd::cli {
 struct ConvertOptions {
     std::string input;
     std::string outdir;
+    std::string date; // the map's header date; empty: the data's own
     std::string bbox;
     std::string polygon;
     std::optional<std::int64_t> relation;

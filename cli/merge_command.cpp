@@ -1,4 +1,5 @@
 #include "merge_command.hpp"
+#include "option_checks.hpp"
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/input_file.hpp"
@@ -25,7 +26,7 @@ CLI::App* MergeCommand::add(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand(
         "merge", "Merge the shard summaries, scenario coverage and ODD summaries of a batch (docs/batch.md)");
     app->add_option("OUTROOT", opt_.outroot, "Output root of `railodd batch` (all shards)")->required();
-    app->add_option("-o,--output", opt_.output, "Merged summary (default: OUTROOT/batch_merged.json)");
+    app->add_option("-o,--output", opt_.output, "Merged summary (default: OUTROOT/batch_merged.json)")->check(non_empty_path);
     return app;
 }
 

@@ -1,4 +1,5 @@
 #include "profile_command.hpp"
+#include "option_checks.hpp"
 
 #include "railodd/odd/odd_spec.hpp"
 #include "railodd/odd/profile.hpp"
@@ -59,6 +60,7 @@ CLI::App* ProfileCommand::add(CLI::App& parent) {
                     "Taxonomy file (default: the profile's, else data/odd/railway_odd.yaml)");
     app->add_flag("--json", opt_.json, "Print the summary and verdict as JSON");
     app->add_option("--max-violations", opt_.max_violations, "Violations listed in the text verdict")
+        ->check(unsigned_integer)
         ->capture_default_str();
     return app;
 }

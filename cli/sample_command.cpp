@@ -1,4 +1,5 @@
 #include "sample_command.hpp"
+#include "option_checks.hpp"
 
 #include "railodd/sample/sample_route.hpp"
 #include "railodd/util/errors.hpp"
@@ -10,7 +11,7 @@ namespace railodd::cli {
 CLI::App* SampleCommand::add(CLI::App& parent) {
     CLI::App* app =
         parent.add_subcommand("sample", "Write the embedded sample route: OSM, DEM and ground truth");
-    app->add_option("-o,--output", outdir_, "Output directory (created if needed)")->required();
+    app->add_option("-o,--output", outdir_, "Output directory (created if needed)")->required()->check(non_empty_path);
     return app;
 }
 

@@ -1,4 +1,5 @@
 #include "scenarios_command.hpp"
+#include "option_checks.hpp"
 
 #include "railodd/odd/odd_spec.hpp"
 #include "railodd/odd/profile.hpp"
@@ -10,10 +11,12 @@
 #include "railodd/scenario/templates.hpp"
 #include "railodd/util/errors.hpp"
 #include "railodd/util/file_names.hpp"
+#include "railodd/util/input_file.hpp"
 #include "railodd/util/output_stage.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -34,14 +37,27 @@ std::string or_default(const std::string& given, const char* shipped) {
 }
 
 // The map's header date, so that the scenario files change only with the map.
+// The scenarios reference the map: one that is not an OpenDRIVE document
+// from start to end (not XML, truncated) is refused rather than referenced.
+// A whole parse is `railodd validate`'s job.
 std::string map_date(const fs::path& xodr) {
+    require_input_file(xodr, "OpenDRIVE map (run `railodd convert` first)");
     std::ifstream in(xodr, std::ios::binary);
-    if (!in) {
-        throw InputError(xodr.string(), "cannot open the map (run `railodd convert` first)");
-    }
     std::string head(4096, '\0');
     in.read(head.data(), static_cast<std::streamsize>(head.size()));
     head.resize(static_cast<std::size_t>(in.gcount()));
+    std::string tail(64, '\0');
+    in.clear();
+    in.seekg(0, std::ios::end);
+    const auto size = static_cast<std::streamoff>(in.tellg());
+    in.seekg(std::max<std::streamoff>(0, size - static_cast<std::streamoff>(tail.size())));
+    in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+    tail.resize(static_cast<std::size_t>(in.gcount()));
+    if (head.find("<OpenDRIVE") == std::string::npos || head.find("<header") == std::string::npos ||
+        tail.find("</OpenDRIVE>") == std::string::npos) {
+        throw InputError(xodr.string(), "not an OpenDRIVE map (no <OpenDRIVE> with a <header> at its start, or "
+                                        "no </OpenDRIVE> at its end: truncated?)");
+    }
     std::smatch m;
     static const std::regex date(R"(<header[^>]*\bdate="(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d)Z?")");
     return std::regex_search(head, m, date) ? m[1].str() : "2026-01-01T00:00:00";
@@ -65,27 +81,37 @@ bool ends_with(const std::string& s, std::string_view tail) {
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// Scenario files of an earlier run in the same folder that this run did not
-// write again: removed, so the folder holds exactly what the manifest lists.
-// Only names railodd itself writes there are touched, whatever the old
+// The files an earlier run's manifest lists: its scenarios, behaviours and
+// distributions. Those this run does not write again are removed in its
+// commit; only names railodd itself writes there are taken, whatever the old
 // manifest says.
-void remove_stale(const fs::path& out, const std::set<std::string>& kept, const nlohmann::json& old) {
-    if (!old.is_object() || !old.contains("scenarios") || !old["scenarios"].is_array()) {
-        return;
-    }
-    for (const auto& s : old["scenarios"]) {
-        for (const char* key : {"file", "behavior"}) {
-            if (!s.is_object() || !s.contains(key) || !s[key].is_string()) {
-                continue;
-            }
-            const std::string name = s[key].get<std::string>();
-            const bool ours = is_safe_name(name) && (ends_with(name, ".xosc") || ends_with(name, ".behavior.yaml"));
-            if (ours && !kept.contains(name)) {
-                std::error_code ec;
-                fs::remove(out / name, ec);
-            }
+std::vector<std::string> earlier_files(const nlohmann::json& old) {
+    std::vector<std::string> out;
+    auto take = [&out](const nlohmann::json& entry, const char* key, const char* folder, std::string_view tail) {
+        if (!entry.is_object() || !entry.contains(key) || !entry[key].is_string()) {
+            return;
+        }
+        std::string name = entry[key].get<std::string>();
+        if (folder && name.rfind(folder, 0) == 0) {
+            name.erase(0, std::string_view{folder}.size());
+        } else if (folder) {
+            return;
+        }
+        if (is_safe_name(name) && ends_with(name, tail)) {
+            out.push_back((folder ? folder : "") + name);
+        }
+    };
+    for (const char* list : {"scenarios", "templates"}) {
+        if (!old.is_object() || !old.contains(list) || !old[list].is_array()) {
+            continue;
+        }
+        for (const auto& e : old[list]) {
+            take(e, "file", nullptr, ".xosc");
+            take(e, "behavior", nullptr, ".behavior.yaml");
+            take(e, "distribution", "distributions/", ".xosc");
         }
     }
+    return out;
 }
 
 } // namespace
@@ -95,15 +121,17 @@ CLI::App* ScenariosCommand::add(CLI::App& parent) {
         "scenarios", "Generate route-anchored OpenSCENARIO scenarios from templates (docs/scenarios.md)");
     app->add_option("--map", opt_.map_dir, "Output folder of `railodd convert` (map.xodr, odd_profile.json)")
         ->required();
-    app->add_option("-o,--output", opt_.out_dir, "Folder for the scenarios")->required();
+    app->add_option("-o,--output", opt_.out_dir, "Folder for the scenarios")->required()->check(non_empty_path);
     app->add_option("--templates", opt_.templates, "Base-scenario templates (default: data/scenario/templates.yaml)");
     app->add_option("--catalog", opt_.catalog, "Asset catalog (default: data/scenario/assets.yaml)");
     app->add_option("--taxonomy", opt_.taxonomy, "ODD taxonomy (default: data/odd/railway_odd.yaml)");
     app->add_option("--odd-spec", opt_.odd_spec, "Declared ODD: coverage.json also lists its gaps");
     app->add_option("--strategy", opt_.strategy, "full, pairwise or random")->capture_default_str();
-    app->add_option("--count", opt_.count, "Scenarios per template (random: required; others: at most)");
-    app->add_option("--seed", opt_.seed, "Seed of the random strategy")->capture_default_str();
+    app->add_option("--count", opt_.count, "Scenarios per template (random: required; others: at most; at most 100000)")
+        ->check(unsigned_integer);
+    app->add_option("--seed", opt_.seed, "Seed of the random strategy")->capture_default_str()->check(unsigned_integer);
     app->add_option("--max-anchors", opt_.max_anchors, "Anchors per template, spread along the route (0: all)")
+        ->check(unsigned_integer)
         ->capture_default_str();
     app->add_option("--osc-version", opt_.osc_version, "OpenSCENARIO version: 1.1, 1.2 or 1.3")->capture_default_str();
     app->add_flag("-q,--quiet", opt_.quiet, "Do not print the coverage table");
@@ -171,15 +199,11 @@ int ScenariosCommand::run() {
     // Write everything, then move it into place
     scenario::OutputInfo info{map_dir.string(), gen.map_file, taxonomy_file, catalog_file, templates_file,
                               opt_.odd_spec, gen.strategy, opt_.count, opt_.seed, osc_minor_, date};
-    const nlohmann::json old = old_manifest(out / "manifest.json");
     scenario::write_scenario_set(stage, generation, coverage, profile, info);
-    stage.commit();
-    std::set<std::string> kept;
-    for (const auto& s : generation.scenarios) {
-        kept.insert(s.scenario.id + ".xosc");
-        kept.insert(s.scenario.id + ".behavior.yaml");
+    for (const auto& name : earlier_files(old_manifest(out / "manifest.json"))) {
+        stage.remove_on_commit(name); // unless written again
     }
-    remove_stale(out, kept, old);
+    stage.commit();
     if (!opt_.quiet) {
         std::cout << scenario::coverage_table(coverage);
     }

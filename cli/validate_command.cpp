@@ -1,4 +1,5 @@
 #include "validate_command.hpp"
+#include "option_checks.hpp"
 
 #include "railodd/util/errors.hpp"
 #include "railodd/xodr_check/check.hpp"
@@ -20,7 +21,7 @@ CLI::App* ValidateCommand::add(CLI::App& parent) {
     app->add_flag("--netconvert", opt_.netconvert,
                   "Also import the file with SUMO netconvert; report its errors and rail/tram edges");
     app->add_flag("--json", opt_.json, "Print the verdict as JSON");
-    app->add_option("--max-findings", opt_.max_findings, "Findings listed in the text verdict")->capture_default_str();
+    app->add_option("--max-findings", opt_.max_findings, "Findings listed in the text verdict")->capture_default_str()->check(unsigned_integer);
     return app;
 }
 

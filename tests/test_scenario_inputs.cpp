@@ -305,8 +305,10 @@ TEST(ScenarioCatalog, RefusesMissingDimensionsAndNonPositiveMass) {
     expect_catalog_refused(edit(catalog_yaml, "mass: 1500", "mass: 0"), mass, {"asset 'car'", "'mass' must be positive"});
     expect_catalog_refused(edit(catalog_yaml, "mass: 1500", "mass: -20"), mass, {"asset 'car'", "not -20"});
     expect_catalog_refused(edit(catalog_yaml, "mass: 1500", "mass: heavy"), mass, {"asset 'car'", "must be a number"});
-    // std::stod reads "inf": an infinite mass or top speed is refused too.
-    expect_catalog_refused(edit(catalog_yaml, "mass: 1500", "mass: inf"), mass, {"asset 'car'", "'mass' must be positive and finite"});
+    // std::stod reads "inf" and "nan": every YAML number refuses them.
+    expect_catalog_refused(edit(catalog_yaml, "mass: 1500", "mass: inf"), mass,
+                           {"asset 'car'", "'mass' must be a number, not 'inf' (NaN and infinities are refused)"});
+    expect_catalog_refused(edit(catalog_yaml, "mass: 1500", "mass: nan"), mass, {"asset 'car'", "not 'nan'"});
     expect_catalog_refused(edit(catalog_yaml, "max_speed_kmh: 180", "max_speed_kmh: inf"),
                            line_with(catalog_yaml, "max_speed_kmh: 180"), {"asset 'car'", "'max_speed_kmh'"});
 }

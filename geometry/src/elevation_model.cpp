@@ -146,11 +146,16 @@ vertical::RasterGrid read_grid(const Tile& t, const ElevationModelOptions& optio
     const double scale = band->GetScale() * unit_factor(*band);
     const double offset = band->GetOffset() * unit_factor(*band);
     constexpr float nan = std::numeric_limits<float>::quiet_NaN();
+    // Cells no terrain can have (infinities, or beyond the Dead Sea shore and
+    // Everest with a margin: an unflagged no-data value such as -32768 or
+    // 1e30) are voids like the no-data ones, filled or reported the same way.
+    constexpr double lowest_m = -1000.0, highest_m = 10000.0;
     for (float& v : g.values) {
-        if (std::isnan(v) || (has_nodata && v == nodata_f)) {
+        const double e = static_cast<double>(v) * scale + offset;
+        if (std::isnan(v) || (has_nodata && v == nodata_f) || !(e >= lowest_m && e <= highest_m)) {
             v = nan;
         } else {
-            v = static_cast<float>(v * scale + offset);
+            v = static_cast<float>(e);
         }
     }
     return vertical::fill_voids(g, options.void_fill_radius_px);

@@ -52,7 +52,8 @@ std::string too_far(double limit) {
 
 // Decides and records one feature: `in_selection` says whether it lies in the
 // selection, `near` whether it is close enough to a track to be kept.
-void place(Feature f, bool in_selection, bool near, const FeatureContext& ctx, IngestResult& result) {
+void place(Feature f, bool in_selection, bool near, bool text_repaired, const FeatureContext& ctx,
+           IngestResult& result) {
     const double limit = reach_for(f.kind, ctx.options);
     // Features near a selected track are kept even just outside a bbox: the
     // selected ways are complete, and so is what stands on them.
@@ -61,6 +62,9 @@ void place(Feature f, bool in_selection, bool near, const FeatureContext& ctx, I
         return;
     }
     ++result.counts.input_features;
+    if (text_repaired) {
+        result.repairs.push_back({"feature", f.osm_type, f.id, text_repair_action});
+    }
     if (near) {
         result.features.push_back(std::move(f));
     } else {
@@ -77,7 +81,7 @@ void place_point(RawFeature& raw, const FeatureContext& ctx, IngestResult& resul
     f.position = node_ref(raw.id, raw.lonlat, ctx.projection);
     f.on_track = std::binary_search(ctx.track_nodes.begin(), ctx.track_nodes.end(), raw.id);
     const bool near = f.on_track || ctx.grid.within(f.position.xy, reach_for(f.kind, ctx.options));
-    place(std::move(f), ctx.selection.contains(raw.lonlat), near, ctx, result);
+    place(std::move(f), ctx.selection.contains(raw.lonlat), near, raw.text_repaired, ctx, result);
 }
 
 void place_area(RawFeature& raw, const NodeLocations& locs, const FeatureContext& ctx, IngestResult& result) {
@@ -114,7 +118,7 @@ void place_area(RawFeature& raw, const NodeLocations& locs, const FeatureContext
     const double limit = reach_for(f.kind, ctx.options);
     const bool near = std::any_of(f.outline.begin(), f.outline.end(),
                                   [&](const NodeRef& n) { return ctx.grid.within(n.xy, limit); });
-    place(std::move(f), in_selection, near, ctx, result);
+    place(std::move(f), in_selection, near, raw.text_repaired, ctx, result);
 }
 
 } // namespace

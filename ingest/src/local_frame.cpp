@@ -1,5 +1,7 @@
 #include "local_frame.hpp"
 
+#include "railodd/util/errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -44,6 +46,23 @@ void project_ways(std::vector<Way>& ways, const LocalProjection& proj) {
         for (auto& part : way.parts) {
             for (auto& node : part) {
                 node.xy = proj.forward(node.lonlat);
+            }
+        }
+    }
+}
+
+void check_frame_extent(const std::vector<Way>& ways, const std::string& file) {
+    for (const auto& way : ways) {
+        for (const auto& part : way.parts) {
+            for (const auto& node : part) {
+                const double d = std::hypot(node.xy.x, node.xy.y);
+                if (!(d <= max_frame_radius_m)) {
+                    throw InputError(file, "way " + std::to_string(way.id) + ": node " + std::to_string(node.id) +
+                                               " lies " + std::to_string(static_cast<long long>(d / 1000.0)) +
+                                               " km from the centre of the selected tracks; one local map frame "
+                                               "covers at most 1000 km from its centre (select less with --bbox, "
+                                               "--polygon or --relation, or convert in tiles with `railodd batch`)");
+                }
             }
         }
     }

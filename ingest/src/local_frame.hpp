@@ -14,6 +14,14 @@ BBox lonlat_bounds(const std::vector<Way>& ways, double margin_m);
 
 void project_ways(std::vector<Way>& ways, const LocalProjection& proj);
 
+// How far from its origin the local transverse Mercator frame is used: its
+// scale error there is 1.2 % (k = 1 + d^2 / 2R^2) and grows fast beyond.
+inline constexpr double max_frame_radius_m = 1000000.0;
+
+// Throws InputError(file, ...) naming the first projected way with a node
+// farther than max_frame_radius_m from the origin.
+void check_frame_extent(const std::vector<Way>& ways, const std::string& file);
+
 // Sorts every list by id and fills the output counts, so that the result does
 // not depend on input order or thread count.
 void finalize(IngestResult& result);

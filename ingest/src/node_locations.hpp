@@ -28,9 +28,10 @@ public:
         }
     }
 
-    // Call once after all want()s and before any set() / find().
+    // Call once after all want()s and before any set() / find(). Stable: of
+    // an id added twice (a file with duplicate node ids), the first stays.
     void seal() {
-        std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.id < b.id; });
+        std::stable_sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.id < b.id; });
         entries_.erase(std::unique(entries_.begin(), entries_.end(),
                                    [](const Entry& a, const Entry& b) { return a.id == b.id; }),
                        entries_.end());

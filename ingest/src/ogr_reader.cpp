@@ -5,6 +5,7 @@
 #include "tag_rules.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/xml_text.hpp"
 #include "railodd/util/phase_timer.hpp"
 
 #include <gdal_priv.h>
@@ -149,10 +150,14 @@ std::vector<std::vector<NodeRef>> line_parts(const OGRGeometry& geom, OGRCoordin
             if (!ct.Transform(1, &x, &y, &z)) {
                 throw std::runtime_error("coordinate transformation failed");
             }
+            if (!(std::abs(x) <= 180.0 && std::abs(y) <= 90.0)) { // NaN and infinities too
+                throw std::runtime_error("a vertex is not a longitude/latitude (" + std::to_string(x) + ", " +
+                                         std::to_string(y) + ")");
+            }
             NodeRef n;
             n.lonlat = {x, y};
             n.id = ids.id_of(n.lonlat);
-            if (line->Is3D()) {
+            if (line->Is3D() && z >= -1000.0 && z <= 10000.0) { // NaN, inf, no-data: no elevation
                 n.ele = z;
             }
             if (part.empty() || part.back().id != n.id) {
@@ -170,6 +175,7 @@ std::vector<std::vector<NodeRef>> line_parts(const OGRGeometry& geom, OGRCoordin
 struct FeatureWay {
     Way way;
     std::string reason;
+    bool text_repaired = false; // attribute text made valid UTF-8 XML text
 };
 
 FeatureWay feature_way(OGRFeature& f, std::int64_t id, const FieldMapping& m, OGRCoordinateTransformation& ct,
@@ -178,7 +184,12 @@ FeatureWay feature_way(OGRFeature& f, std::int64_t id, const FieldMapping& m, OG
     Way& way = fw.way;
     way.origin = Origin::ogr;
     way.id = id;
-    way.tags = map_tags(f, m);
+    for (auto& [key, value] : map_tags(f, m)) {
+        std::string k = key;
+        fw.text_repaired = make_xml_text(k) || fw.text_repaired;
+        fw.text_repaired = make_xml_text(value) || fw.text_repaired;
+        way.tags.emplace(std::move(k), std::move(value));
+    }
     const OGRGeometry* geom = f.GetGeometryRef();
     if (!geom || geom->IsEmpty()) {
         fw.reason = "feature has no geometry";
@@ -252,6 +263,11 @@ IngestResult read_vector(const fs::path& file, const fs::path& mapping_file, con
             result.dropped.push_back({"track", "ogr_feature", id, fw.reason});
             continue;
         }
+        if (fw.text_repaired) {
+            result.repairs.push_back({"track", "ogr_feature", id,
+                                      "attribute text with bytes that are not UTF-8 XML text kept with U+FFFD in "
+                                      "their place"});
+        }
         result.tracks.push_back(std::move(fw.way));
     }
     if (result.tracks.empty()) {
@@ -260,6 +276,7 @@ IngestResult read_vector(const fs::path& file, const fs::path& mapping_file, con
     }
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);
+    check_frame_extent(result.tracks, file.string());
     result.counts.input_track_nodes = distinct_nodes(result.tracks);
     result.counts.input_nodes = result.counts.input_track_nodes;
     timer.stop();

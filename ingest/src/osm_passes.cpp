@@ -14,14 +14,6 @@ namespace {
 
 using bits = osmium::osm_entity_bits::type;
 
-Tags to_tags(const osmium::TagList& list) {
-    Tags tags;
-    for (const auto& tag : list) {
-        tags.emplace(tag.key(), tag.value());
-    }
-    return tags;
-}
-
 std::vector<std::int64_t> refs_of(const osmium::Way& way) {
     std::vector<std::int64_t> refs;
     refs.reserve(way.nodes().size());
@@ -31,6 +23,13 @@ std::vector<std::int64_t> refs_of(const osmium::Way& way) {
     return refs;
 }
 
+RawWay raw_way(const osmium::Way& way) {
+    RawWay r{way.id(), {}, refs_of(way)};
+    r.tags = tags_of(way.tags(), r.text_repaired);
+    return r;
+}
+
+
 double ele_of(const osmium::TagList& tags) {
     const char* v = tags.get_value_by_key("ele");
     if (!v) {
@@ -38,7 +37,8 @@ double ele_of(const osmium::TagList& tags) {
     }
     char* end = nullptr;
     const double e = std::strtod(v, &end);
-    return end != v ? e : std::numeric_limits<double>::quiet_NaN();
+    // "inf", "1e999" or a value no terrain has is no elevation (as the DEM's voids).
+    return end != v && e >= -1000.0 && e <= 10000.0 ? e : std::numeric_limits<double>::quiet_NaN();
 }
 
 // A closed way with a land-use kind, or a member of a land-use multipolygon.
@@ -75,14 +75,14 @@ WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std
         const auto& way = static_cast<const osmium::Way&>(obj);
         if (is_track(way.tags())) {
             if ((!members || std::binary_search(members->begin(), members->end(), way.id())) && touches(way)) {
-                scan.tracks.push_back({way.id(), to_tags(way.tags()), refs_of(way)});
+                scan.tracks.push_back(raw_way(way));
             }
         } else if (auto kind = area_feature_kind(way.tags()); kind && touches(way)) {
             RawFeature f;
             f.osm_type = "way";
             f.id = way.id();
             f.kind = std::move(*kind);
-            f.tags = to_tags(way.tags());
+            f.tags = tags_of(way.tags(), f.text_repaired);
             f.refs = refs_of(way);
             scan.area_features.push_back(std::move(f));
         }
@@ -92,7 +92,7 @@ WayScan scan_track_ways(const std::filesystem::path& file, const std::vector<std
                 scan.roads_complete = false; // too many: the corridor passes read them instead
                 std::vector<RawWay>().swap(scan.roads);
             } else {
-                scan.roads.push_back({way.id(), to_tags(way.tags()), refs_of(way)});
+                scan.roads.push_back(raw_way(way));
             }
         }
         if (scan.land_use_complete) {
@@ -149,7 +149,13 @@ NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted, co
         }
         const LonLat ll{node.location().lon(), node.location().lat()};
         auto* e = wanted.find(node.id());
-        if (e) {
+        if (e && e->present) {
+            // A file with one node id twice: the first location is kept, the
+            // conflict reported (osm_reader records it as a repair).
+            if (e->lonlat.lon != ll.lon || e->lonlat.lat != ll.lat) {
+                scan.duplicates.push_back({node.id(), ll});
+            }
+        } else if (e) {
             e->lonlat = ll;
             e->ele = ele_of(node.tags());
             e->present = true;
@@ -162,7 +168,7 @@ NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted, co
             f.osm_type = "node";
             f.id = node.id();
             f.kind = std::move(*kind);
-            f.tags = to_tags(node.tags());
+            f.tags = tags_of(node.tags(), f.text_repaired);
             f.lonlat = ll;
             scan.point_features.push_back(std::move(f));
         }
@@ -173,7 +179,7 @@ NodeScan scan_nodes(const std::filesystem::path& file, NodeLocations& wanted, co
 void locate_nodes(const std::filesystem::path& file, NodeLocations& wanted, const std::string& pass) {
     scan_osm(file, bits::node, pass, [&](const osmium::OSMObject& obj) {
         const auto& node = static_cast<const osmium::Node&>(obj);
-        if (auto* e = wanted.find(node.id()); e && node.location().valid()) {
+        if (auto* e = wanted.find(node.id()); e && !e->present && node.location().valid()) {
             e->lonlat = {node.location().lon(), node.location().lat()};
             e->present = true;
         }
@@ -206,7 +212,7 @@ std::vector<RawWay> scan_road_ways(const std::filesystem::path& file, const Node
         const bool near = std::any_of(way.nodes().begin(), way.nodes().end(),
                                       [&](const osmium::NodeRef& nr) { return corridor.located(nr.ref()); });
         if (near) {
-            roads.push_back({way.id(), to_tags(way.tags()), refs_of(way)});
+            roads.push_back(raw_way(way));
         }
     });
     return roads;

@@ -13,10 +13,17 @@
 
 namespace railodd::ingest {
 
+// What the report says of an object whose tag text was made valid
+// (osm_scan.hpp tags_of).
+inline constexpr const char* text_repair_action =
+    "tag text with bytes that are not UTF-8 XML text (invalid sequences, control characters) kept with U+FFFD "
+    "in their place";
+
 struct RawWay {
     std::int64_t id = 0;
     Tags tags;
     std::vector<std::int64_t> refs;
+    bool text_repaired = false; // tag text made valid (osm_scan.hpp tags_of)
 };
 
 struct RawFeature {
@@ -26,6 +33,7 @@ struct RawFeature {
     Tags tags;
     LonLat lonlat;                   // nodes
     std::vector<std::int64_t> refs;  // ways
+    bool text_repaired = false;      // tag text made valid (osm_scan.hpp tags_of)
 };
 
 // A closed way tagged with a land-use kind, or a member way of a land-use
@@ -72,6 +80,11 @@ std::vector<RawLandUseWay> scan_land_use_ways(const std::filesystem::path& file,
 struct NodeScan {
     std::size_t node_count = 0;
     std::vector<RawFeature> point_features;
+    struct Duplicate {
+        std::int64_t id = 0;
+        LonLat ignored; // the later location of a wanted node id met twice
+    };
+    std::vector<Duplicate> duplicates;
 };
 
 // Locates every wanted node and collects railway point feature nodes (only

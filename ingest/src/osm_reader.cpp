@@ -13,12 +13,15 @@
 #include "railodd/util/errors.hpp"
 #include "railodd/util/phase_timer.hpp"
 
+#include <osmium/io/any_input.hpp>
 #include <osmium/io/file.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
+#include <regex>
 #include <vector>
 
 namespace railodd::ingest {
@@ -107,6 +110,22 @@ std::vector<std::int64_t> sorted_track_node_ids(const std::vector<Way>& tracks) 
     return ids;
 }
 
+// The file header's replication timestamp ("2020-07-20T12:44:03Z"), if it
+// has one in that form.
+std::string data_timestamp(const fs::path& file) {
+    std::string t;
+    try {
+        osmium::io::Reader reader{osmium::io::File{file.string()}, osmium::osm_entity_bits::nothing};
+        const auto header = reader.header();
+        t = header.get("osmosis_replication_timestamp", header.get("timestamp"));
+        reader.close();
+    } catch (const std::exception&) {
+        return {}; // the passes report what is wrong with the file
+    }
+    static const std::regex iso(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)");
+    return std::regex_match(t, iso) ? t : std::string{};
+}
+
 } // namespace
 
 IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
@@ -121,6 +140,7 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     PhaseTimer timer;
     IngestResult result;
     result.source = file.string();
+    result.timestamp = data_timestamp(file);
     result.selection = sel.describe();
 
     // Phase 1: a route relation restricts the tracks to its member ways;
@@ -130,6 +150,9 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
         timer.start("read_relations");
         relations = scan_relations(file, sel.relation);
         result.relation = relations.route;
+        if (relations.route_text_repaired) {
+            result.repairs.push_back({"route", "relation", relations.route->id, text_repair_action});
+        }
     }
 
     // Phase 2: with a bounding box or polygon, the nodes in and near it
@@ -170,6 +193,13 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     timer.start("read_nodes");
     NodeScan nodes = scan_nodes(file, locs, near_box ? &*near_box : nullptr);
     result.counts.input_nodes = nodes.node_count;
+    for (const auto& d : nodes.duplicates) {
+        char at[64];
+        std::snprintf(at, sizeof at, "%.7f, %.7f", d.ignored.lon, d.ignored.lat);
+        result.repairs.push_back({"node", "node", d.id,
+                                  std::string{"the id occurs again at another location ("} + at +
+                                      "): the first location kept, the later one ignored"});
+    }
 
     // Phase 5: the selection, the local frame and the track geometry in it.
     timer.start("select_and_project");
@@ -180,12 +210,16 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
                                             std::to_string(relations.route_ways.size()) + " member way(s))");
     }
     if (result.tracks.empty()) {
-        throw InputError(file.string(), "no railway track way with located nodes in the selection (" +
-                                            result.selection + "); " + std::to_string(result.dropped.size()) +
-                                            " track way(s) without node locations");
+        throw InputError(file.string(), "no usable railway track way in the selection (" + result.selection +
+                                            "); " + std::to_string(result.dropped.size()) + " track way(s) dropped" +
+                                            (result.dropped.empty() ? std::string{}
+                                                                    : ", e.g. way " +
+                                                                          std::to_string(result.dropped.front().id) +
+                                                                          ": " + result.dropped.front().reason));
     }
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);
+    check_frame_extent(result.tracks, file.string());
     result.counts.input_track_nodes = sorted_track_node_ids(result.tracks).size();
     // Cells small against the corridor: queries stop at the first segment in reach.
     const SegmentGrid grid = track_grid(result.tracks, 50.0);

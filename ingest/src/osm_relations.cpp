@@ -27,14 +27,6 @@ bool is_rail_route_master(const osmium::TagList& tags) {
             std::strcmp(rm, "light_rail") == 0 || std::strcmp(rm, "railway") == 0);
 }
 
-Tags tags_of(const osmium::TagList& list) {
-    Tags tags;
-    for (const auto& t : list) {
-        tags.emplace(t.key(), t.value());
-    }
-    return tags;
-}
-
 // Ways of `id` in member order, nested relations expanded in place; `seen`
 // guards against the relation cycles that exist in the wild, and nested
 // relations outside the extract are skipped.
@@ -106,7 +98,7 @@ RelationScan scan_relations(const std::filesystem::path& file, std::optional<std
             }
         }
         if (rel.id() == *route) {
-            route_tags = tags_of(rel.tags());
+            route_tags = tags_of(rel.tags(), scan.route_text_repaired);
         }
         relations.emplace(rel.id(), std::move(m));
     });

@@ -22,6 +22,7 @@ struct RawLandUseRelation {
 
 struct RelationScan {
     std::optional<RouteRelation> route;        // the requested rail route
+    bool route_text_repaired = false;           // its tag text made valid (osm_scan.hpp tags_of)
     std::vector<std::int64_t> route_ways;       // every way of it and of the relations it holds, sorted
     std::vector<RawLandUseRelation> land_use;   // by id
     std::vector<std::int64_t> land_use_members; // their member ways, sorted, unique

@@ -1,9 +1,22 @@
 #include "osm_scan.hpp"
 
+#include "railodd/util/xml_text.hpp"
+
 #include <cstring>
 #include <system_error>
 
 namespace railodd::ingest {
+
+Tags tags_of(const osmium::TagList& list, bool& repaired) {
+    Tags tags;
+    for (const auto& tag : list) {
+        std::string key = tag.key(), value = tag.value();
+        repaired = make_xml_text(key) || repaired;
+        repaired = make_xml_text(value) || repaired;
+        tags.emplace(std::move(key), std::move(value));
+    }
+    return tags;
+}
 
 void check_tag_list(const std::filesystem::path& file, const osmium::OSMObject& object) {
     const osmium::TagList& tags = object.tags();

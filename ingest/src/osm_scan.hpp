@@ -2,6 +2,7 @@
 // One streaming pass over an OSM file for the given entity types. libosmium
 // decodes PBF blocks on its thread pool and still delivers objects in file
 // order, so every pass is deterministic whatever the thread count.
+#include "railodd/ingest/types.hpp"
 #include "railodd/util/errors.hpp"
 
 #include <osmium/io/any_input.hpp>
@@ -21,6 +22,10 @@ namespace railodd::ingest {
 // the list when a string held a NUL (check_pbf_strings names such a string
 // up front; this guards every pass of every format).
 void check_tag_list(const std::filesystem::path& file, const osmium::OSMObject& object);
+
+// The tags as strings that XML and JSON outputs can carry: bytes that are not
+// UTF-8 XML text become U+FFFD, and `repaired` says so (for the report).
+Tags tags_of(const osmium::TagList& list, bool& repaired);
 
 template <typename Visitor>
 void scan_osm(const std::filesystem::path& file, osmium::osm_entity_bits::type types, const std::string& pass,

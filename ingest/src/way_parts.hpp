@@ -18,6 +18,9 @@ struct BuiltWay {
     std::vector<std::string> repairs; // what was done to the input to use it
 };
 
+// Dropped, with the reason, when two consecutive nodes lie farther apart.
+inline constexpr double max_segment_m = 50000.0;
+
 BuiltWay build_way(RawWay raw, const Locator& locate);
 
 inline Locator locator_of(const NodeLocations& locs) {

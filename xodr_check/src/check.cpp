@@ -4,8 +4,10 @@
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/input_file.hpp"
+#include "railodd/util/xml_text.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -40,6 +42,23 @@ void count_roads(const Document& doc, Summary& sum) {
         std::count_if(doc.roads.begin(), doc.roads.end(), [](const Road& r) { return r.rail; }));
 }
 
+// XML 1.0 in UTF-8 (what OpenDRIVE requires): pugixml reads control
+// characters and invalid byte sequences without complaint, strict readers
+// (libxml2, SUMO's Xerces) refuse the whole file.
+void check_encoding(const std::string& xml, const std::string& name, CheckResult& result) {
+    const std::size_t at = first_non_xml_text(xml);
+    if (at == std::string::npos) {
+        return;
+    }
+    const auto line = 1 + std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+    char byte[8];
+    std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(xml[at]));
+    result.findings.push_back({Severity::error, "file", name, nan, "encoding",
+                               "byte " + std::to_string(at) + " (line " + std::to_string(line) + ", " + byte +
+                                   ") is not UTF-8 XML 1.0 text (a control character or invalid UTF-8): strict "
+                                   "XML readers refuse the file"});
+}
+
 } // namespace
 
 CheckResult check_text(const std::string& xml, const std::string& name, const Limits& limits) {
@@ -49,11 +68,16 @@ CheckResult check_text(const std::string& xml, const std::string& name, const Li
     result.file = name;
     result.findings = doc.findings;
     count_roads(doc, result.summary);
-    if (doc.rev_major != 1 || doc.rev_minor < 6 || doc.rev_minor > 8) {
+    if (doc.rev_major != 1 || doc.rev_minor < 0 || doc.rev_minor > 8) {
+        result.findings.push_back({Severity::error, "file", name, nan, "version",
+                                   "OpenDRIVE " + result.summary.version +
+                                       " does not exist (revisions 1.0 to 1.8 do): no reader can take the map"});
+    } else if (doc.rev_minor < 6) {
         result.findings.push_back({Severity::warning, "file", name, nan, "version",
                                    "OpenDRIVE " + result.summary.version +
                                        ": the checks follow 1.6 to 1.8 and may not fit this revision"});
     }
+    check_encoding(xml, name, result);
     Context ctx(doc, limits, result);
     check_plan_views(ctx);
     check_elevations(ctx);

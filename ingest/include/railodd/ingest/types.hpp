@@ -108,6 +108,7 @@ struct IngestCounts {
 struct IngestResult {
     std::string source;   // input file
     std::string selection; // human-readable description of the selection
+    std::string timestamp; // the data's date (an OSM header's replication timestamp), empty if unknown
     LocalProjection projection{LonLat{0.0, 0.0}};
     std::vector<Way> tracks;
     std::vector<Way> roads;

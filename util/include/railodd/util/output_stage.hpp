@@ -1,7 +1,14 @@
 #pragma once
 // All outputs of one command are written into a hidden staging folder inside
-// the output directory and renamed into place only when the command succeeds,
+// the output directory and moved into place only when the command succeeds,
 // so a failed run leaves no half-written file behind.
+//
+// A run holds a lock on OUTDIR (flock on the folder) from start to commit: a
+// second run into the same folder is refused, and staging folders left by
+// killed runs are removed. The commit writes a journal (OUTDIR/.railodd-journal: the staging
+// folder, the names to move, the names to remove) before it moves anything; a
+// run killed mid-commit is rolled forward by the next run into the folder, so
+// the folder never stays a mix of two runs' files.
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
@@ -14,6 +21,7 @@ namespace railodd {
 
 class OutputStage {
 public:
+    // Throws OutputError when OUTDIR cannot be made or locked (another run).
     explicit OutputStage(std::filesystem::path outdir);
     OutputStage(const OutputStage&) = delete;
     OutputStage& operator=(const OutputStage&) = delete;
@@ -21,6 +29,7 @@ public:
 
     // Path inside the staging folder where the output `name` is to be written.
     // This and the writers may be called from several threads, one per file.
+    // Throws InputError for a name that is not a file inside the folder.
     std::filesystem::path staged_path(std::string_view name);
     void write_text(std::string_view name, std::string_view content);
     // Streams the output `name` straight into its staged file: large outputs
@@ -28,7 +37,12 @@ public:
     // as one string.
     void write_with(std::string_view name, const std::function<void(std::ostream&)>& write);
 
-    // Renames every staged file into the output directory; the final paths.
+    // An earlier run's output that this run replaces with nothing: removed by
+    // the commit (in the same journal), unless this run writes it again.
+    void remove_on_commit(std::string_view name);
+
+    // Moves every staged file into the output directory and removes the
+    // stale ones; the final paths.
     std::vector<std::filesystem::path> commit();
 
     const std::filesystem::path& outdir() const noexcept { return outdir_; }
@@ -37,8 +51,13 @@ private:
     std::filesystem::path outdir_;
     std::filesystem::path staging_;
     std::vector<std::string> names_;
+    std::vector<std::string> removals_;
     std::mutex names_mutex_;
+    int lock_fd_ = -1;
     bool committed_ = false;
 };
+
+// The staging folders' prefix inside an output folder.
+inline constexpr const char* staging_prefix = ".railodd-staging-";
 
 } // namespace railodd
