@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <functional>
 #include <string_view>
 #include <vector>
@@ -264,4 +265,210 @@ TEST_F(CliHostileInput, StaleManifestWithWrongTypesDoesNotStopAScenarioRun) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_TRUE(fs::exists(dir / "scen" / "keep.txt")) << "only .xosc / .behavior.yaml files are railodd's to remove";
     EXPECT_TRUE(fs::exists(dir)) << r.output;
+}
+
+// --- 5. text that XML cannot carry -----------------------------------------
+
+// Invalid UTF-8 (PBF) and control characters or lone surrogates (OPL escapes)
+// in tags: the map stays XML that strict readers open; the repair is reported.
+TEST_F(CliHostileInput, TagTextThatIsNotXmlIsRepairedAndReported) {
+    const auto dir = scratch_dir();
+    PbfBuilder b;
+    b.nodes = {{1, 10.0, 48.0, {}}, {2, 10.002, 48.0, {}}, {3, 10.004, 48.0, {}}};
+    b.ways = {{77, {{"railway", "rail"}, {"name", "K\xC3\xB6ln \xFF\xFE \x01 \xED\xA0\x80 end"}}, {1, 2, 3}}};
+    b.write(dir / "bad.osm.pbf");
+    write_file(dir / "bad.opl", "n1 v1 x10.0 y48.0\nn2 v1 x10.002 y48.0\nn3 v1 x10.004 y48.0\n"
+                                "w78 v1 Trailway=rail,name=a%1%b%d800%c%7f%d Nn1,n2,n3\n");
+    for (const std::string input : std::vector<std::string>{"bad.osm.pbf", "bad.opl"}) {
+        SCOPED_TRACE(input);
+        const fs::path out = dir / (input + ".out");
+        const auto r = run_railodd("convert " + quoted(dir / input) + " -o " + quoted(out));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        for (const char* file : {"map.xodr"}) {
+            const auto x = run_command("xmllint --noout " + quoted(out / file));
+            EXPECT_EQ(x.exit_code, 0) << file << ": " << x.output;
+        }
+        const auto v = run_railodd("validate " + quoted(out / "map.xodr"));
+        EXPECT_EQ(v.exit_code, 0) << v.output;
+        const auto report = nlohmann::json::parse(read_file(out / "report.json"));
+        bool reported = false;
+        for (const auto& rep : report["repairs"]) {
+            reported = reported || rep["action"].get<std::string>().find("U+FFFD") != std::string::npos;
+        }
+        EXPECT_TRUE(reported) << report["repairs"].dump();
+    }
+}
+
+TEST_F(CliHostileInput, ValidateRefusesMapsStrictReadersCannotOpen) {
+    const auto dir = scratch_dir();
+    const std::string good = read_file(map() / "map.xodr");
+    std::string ctl = good;
+    const auto name = ctl.find("name=\"", ctl.find("<header"));
+    ASSERT_NE(name, std::string::npos);
+    ctl.insert(name + 6, "\x01"); // a control character inside the header's name
+    write_file(dir / "ctl.xodr", ctl);
+    std::string rev = good;
+    const auto at = rev.find("revMinor=\"");
+    rev.replace(at, 12, "revMinor=\"99\"");
+    write_file(dir / "rev.xodr", rev);
+    const auto c = run_railodd("validate " + quoted(dir / "ctl.xodr"));
+    EXPECT_EQ(c.exit_code, 5) << c.output;
+    EXPECT_NE(c.output.find("not UTF-8 XML 1.0 text"), std::string::npos) << c.output;
+    const auto r = run_railodd("validate " + quoted(dir / "rev.xodr"));
+    EXPECT_EQ(r.exit_code, 5) << r.output;
+    EXPECT_NE(r.output.find("1.99 does not exist"), std::string::npos) << r.output;
+}
+
+TEST_F(CliHostileInput, TemplateTextWithAControlCharacterIsRefused) {
+    const auto dir = scratch_dir();
+    std::string t = read_file(data_dir / "scenario" / "templates.yaml");
+    const auto at = t.find("text: ");
+    ASSERT_NE(at, std::string::npos);
+    t.insert(at + 6, "\"bell \\x07 here\" # ");
+    const auto templates = write_file(dir / "t.yaml", t);
+    const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "scen") + " --templates " +
+                               quoted(templates));
+    expect_refusal(r, {2, {templates.string() + ":", "not UTF-8 XML text"}});
+    EXPECT_FALSE(fs::exists(dir / "scen"));
+}
+
+// --- 6. values that pass a naive range check ----------------------------------
+
+TEST_F(CliHostileInput, NonFiniteOrOutOfRangeOptionsAreUsageErrors) {
+    const auto dir = scratch_dir();
+    const std::string convert = "convert " + quoted(root() / "sample" / "sample_route.osm") + " -o " + quoted(dir / "o");
+    const std::string scen = "scenarios --map " + quoted(map()) + " -o " + quoted(dir / "s");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {convert + " --node-noise nan", "--node-noise"},
+        {convert + " --feature-distance nan", "--feature-distance"},
+        {convert + " --station-distance inf", "--station-distance"},
+        {convert + " --road-corridor 1e50", "--road-corridor"},
+        {convert + " --threads -1", "--threads"},
+        {convert + " --date yesterday", "--date"},
+        {"convert " + quoted(root() / "sample" / "sample_route.osm") + " -o ''", "--output"},
+        {scen + " --strategy random --count 5 --seed -1", "--seed"},
+        {scen + " --count -1", "--count"},
+        {scen + " --max-anchors -3", "--max-anchors"},
+        {"scenarios --map " + quoted(map()) + " -o ''", "--output"},
+    };
+    for (const auto& [args, says] : cases) {
+        SCOPED_TRACE(args);
+        expect_refusal(run_railodd(args), {1, {says}});
+    }
+    EXPECT_FALSE(fs::exists(dir / "o"));
+    EXPECT_FALSE(fs::exists(dir / "s"));
+}
+
+TEST_F(CliHostileInput, DuplicateYamlKeysAreRefusedWithTheirLine) {
+    const auto dir = scratch_dir();
+    std::string t = read_file(data_dir / "scenario" / "templates.yaml");
+    const auto at = t.find("    text: ");
+    ASSERT_NE(at, std::string::npos);
+    t.insert(at, "    text: first\n");
+    const auto templates = write_file(dir / "t.yaml", t);
+    expect_refusal(run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(dir / "s") + " --templates " +
+                               quoted(templates)),
+                   {2, {templates.string() + ":", "duplicate key 'text'"}});
+    const auto spec = write_file(dir / "spec.yaml", "odd_spec: twice\nodd_spec: again\nelements: []\n");
+    expect_refusal(run_railodd("profile " + quoted(map()) + " --odd-spec " + quoted(spec)),
+                   {2, {spec.string() + ":2", "duplicate key 'odd_spec'"}});
+    const auto bomb = write_file(dir / "bomb.yaml", "a: &a [x, x, x, x, x, x, x, x, x, x]\n"
+                                                     "b: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
+                                                     "c: &c [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\n"
+                                                     "d: &d [*c, *c, *c, *c, *c, *c, *c, *c, *c, *c]\n"
+                                                     "e: &e [*d, *d, *d, *d, *d, *d, *d, *d, *d, *d]\n"
+                                                     "f: &f [*e, *e, *e, *e, *e, *e, *e, *e, *e, *e]\n"
+                                                     "g: &g [*f, *f, *f, *f, *f, *f, *f, *f, *f, *f]\n");
+    expect_refusal(run_railodd("profile " + quoted(map()) + " --odd-spec " + quoted(bomb)),
+                   {2, {bomb.string(), "YAML nodes (aliases expanded)"}});
+}
+
+TEST_F(CliHostileInput, ScenariosRefuseAMapThatIsNotOpenDrive) {
+    const auto dir = scratch_dir();
+    fs::copy_file(map() / "odd_profile.json", dir / "odd_profile.json");
+    for (const std::string& text : std::vector<std::string>{"this is not xml", read_file(map() / "map.xodr").substr(0, 5000)}) {
+        write_file(dir / "map.xodr", text);
+        expect_refusal(run_railodd("scenarios --map " + quoted(dir) + " -o " + quoted(dir / "s")),
+                       {2, {"map.xodr", "not an OpenDRIVE map"}});
+    }
+}
+
+// --- 7. degenerate data ----------------------------------------------------------
+
+TEST_F(CliHostileInput, TrackOfZeroLengthIsRefusedNotAnEmptyMap) {
+    const auto dir = scratch_dir();
+    write_file(dir / "zero.opl", "n1 v1 x10.0 y48.0\nn2 v1 x10.0 y48.0\nw1 v1 Trailway=rail Nn1,n2\n");
+    const auto r = run_railodd("convert " + quoted(dir / "zero.opl") + " -o " + quoted(dir / "o"));
+    expect_refusal(r, {2, {"zero.opl", "no track could be written to the map", "zero length"}});
+    EXPECT_FALSE(fs::exists(dir / "o" / "map.xodr"));
+}
+
+TEST_F(CliHostileInput, DuplicateNodeIdsKeepTheFirstAndAreReported) {
+    const auto dir = scratch_dir();
+    write_file(dir / "dup.opl", "n1 v1 x10.0 y48.0\nn2 v1 x10.001 y48.0\nn3 v1 x10.002 y48.0\n"
+                                "n2 v1 x11.0 y48.0\nw1 v1 Trailway=rail Nn1,n2,n3\n");
+    const auto r = run_railodd("convert " + quoted(dir / "dup.opl") + " -o " + quoted(dir / "o"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto report = nlohmann::json::parse(read_file(dir / "o" / "report.json"));
+    ASSERT_EQ(report["repairs"].size(), 1u) << report["repairs"].dump();
+    EXPECT_EQ(report["repairs"][0]["osm_id"], 2);
+    EXPECT_NE(report["repairs"][0]["action"].get<std::string>().find("first location kept"), std::string::npos);
+    EXPECT_LT(report["geometry"]["summary"]["length_km"].get<double>(), 0.2) << "not the 75 km detour to 11 E";
+}
+
+// A 300-byte way from 80 S to 80 N once took 20 s and 519 MB: now dropped
+// with its reason; tracks 3,300 km apart cannot share one local frame.
+TEST_F(CliHostileInput, WaysALocalFrameCannotHoldAreRefusedAtOnce) {
+    const auto dir = scratch_dir();
+    write_file(dir / "pole.opl", "n1 v1 x10.0 y-80.0\nn2 v1 x10.0 y80.0\nw1 v1 Trailway=rail Nn1,n2\n");
+    const auto p = run_railodd("convert " + quoted(dir / "pole.opl") + " -o " + quoted(dir / "o"));
+    expect_refusal(p, {2, {"pole.opl", "way 1", "km apart"}});
+    write_file(dir / "far.opl", "n1 v1 x10.0 y30.0\nn2 v1 x10.001 y30.0\nn3 v1 x10.0 y60.0\nn4 v1 x10.001 y60.0\n"
+                                "w1 v1 Trailway=rail Nn1,n2\nw2 v1 Trailway=rail Nn3,n4\n");
+    const auto f = run_railodd("convert " + quoted(dir / "far.opl") + " -o " + quoted(dir / "o"));
+    expect_refusal(f, {2, {"far.opl", "covers at most 1000 km"}});
+    EXPECT_FALSE(fs::exists(dir / "o"));
+}
+
+// --- 8. outputs ---------------------------------------------------------------
+
+// The map's date is the data's (or --date), not the input file's mtime: a copy
+// of the same data converts to the same bytes on every machine.
+TEST_F(CliHostileInput, MapDateDoesNotFollowTheFileTime) {
+    const auto dir = scratch_dir();
+    const fs::path input = root() / "sample" / "sample_route.osm";
+    const fs::path copy = dir / "copy" / "sample_route.osm"; // same name: the header carries it
+    fs::create_directories(copy.parent_path());
+    fs::copy_file(input, copy);
+    fs::last_write_time(copy, fs::last_write_time(input) - std::chrono::hours(24 * 400));
+    ASSERT_EQ(run_railodd("convert " + quoted(copy) + " -o " + quoted(dir / "a")).exit_code, 0);
+    EXPECT_EQ(read_file(dir / "a" / "map.xodr"), read_file(map() / "map.xodr"));
+    ASSERT_EQ(run_railodd("convert " + quoted(copy) + " -o " + quoted(dir / "b") +
+                          " --date 2024-01-02T03:04:05")
+                  .exit_code,
+              0);
+    EXPECT_NE(read_file(dir / "b" / "map.xodr").find("date=\"2024-01-02T03:04:05Z\""), std::string::npos);
+}
+
+// A rerun with fewer templates removes the earlier run's scenario, behaviour
+// and distribution files of the others, in its commit.
+TEST_F(CliHostileInput, RerunRemovesStaleDistributionsToo) {
+    const auto dir = scratch_dir();
+    const fs::path out = dir / "s";
+    ASSERT_EQ(run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(out) + " -q").exit_code, 0);
+    ASSERT_TRUE(fs::exists(out / "distributions" / "tunnel_exit_animal.xosc"));
+    std::string t = read_file(data_dir / "scenario" / "templates.yaml");
+    t.erase(t.find("  - id: level_crossing_person")); // the first template only
+    const auto templates = write_file(dir / "one.yaml", t);
+    const auto r = run_railodd("scenarios --map " + quoted(map()) + " -o " + quoted(out) + " -q --templates " +
+                               quoted(templates));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const auto& f : listing(out)) {
+        if (f.find(".xosc") != std::string::npos || f.find(".behavior.yaml") != std::string::npos) {
+            EXPECT_TRUE(f.rfind("curve_crossing_street_vehicle", 0) == 0 ||
+                        f.rfind("distributions/curve_crossing_street_vehicle", 0) == 0 || f.rfind("catalogs/", 0) == 0)
+                << "stale: " << f;
+        }
+    }
+    EXPECT_TRUE(fs::exists(out / "distributions" / "curve_crossing_street_vehicle.xosc"));
 }

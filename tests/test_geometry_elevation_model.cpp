@@ -93,6 +93,33 @@ TEST(ElevationModel, VoidsAreFilledFromTheirNeighbours) {
     EXPECT_TRUE(dem.sample({spec.x0 + 66.5 * arcsec, spec.y0 - 35.5 * arcsec}));
 }
 
+// Cells no terrain has (infinities, an unflagged 1e30 or -32768 no-data) are
+// voids like flagged ones: filled from their neighbours, never a NaN or an
+// infinity in a profile (an inf cell once wrote <elevation a="-nan">).
+TEST(ElevationModel, NonFiniteAndImpossibleCellsAreVoids) {
+    const auto dir = test::scratch_dir();
+    DemSpec spec = wgs84_spec();
+    spec.nodata = -9999.0f;
+    const double bad[] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 1e30,
+                          -32768.0};
+    test::write_dem(dir / "inf.tif", spec, [&](double lon, double lat) {
+        const int c = static_cast<int>(std::floor((lon - spec.x0) / spec.step));
+        const int r = static_cast<int>(std::floor((spec.y0 - lat) / spec.step));
+        return r == 40 && c >= 50 && c < 54 ? bad[c - 50] : plane(lon, lat);
+    });
+    geometry::ElevationModelOptions options;
+    options.void_fill_radius_px = 5;
+    const ElevationModel dem(dir / "inf.tif", options);
+    for (int c = 50; c < 54; ++c) {
+        const double lon = spec.x0 + (c + 0.5) * arcsec;
+        const double lat = spec.y0 - 40.5 * arcsec;
+        const auto z = dem.sample({lon, lat});
+        ASSERT_TRUE(z) << c;
+        EXPECT_TRUE(std::isfinite(*z)) << c;
+        EXPECT_NEAR(*z, plane(lon, lat), 0.5) << c;
+    }
+}
+
 TEST(ElevationModel, IntegerRasterWithItsOwnNodata) {
     const auto dir = test::scratch_dir();
     DemSpec spec = wgs84_spec();

@@ -1,5 +1,6 @@
 // OutputStage: outputs appear in the output folder only when the command
 // commits, streamed or whole, and a writer that fails leaves nothing behind.
+#include "railodd/util/errors.hpp"
 #include "railodd/util/output_stage.hpp"
 #include "test_support.hpp"
 
@@ -75,4 +76,85 @@ TEST(OutputStage, WritersOnTwoThreadsCommitBothFiles) {
     EXPECT_EQ(stage.commit().size(), 2u);
     EXPECT_EQ(read(out / "a.txt"), std::string(1 << 20, 'a'));
     EXPECT_EQ(read(out / "b.txt"), std::string(1 << 20, 'b'));
+}
+
+// Staging folders of killed runs (SIGKILL leaves them) are removed by the next
+// run into the folder; other hidden files are not touched.
+TEST(OutputStage, StagingLeftByAKilledRunIsRemoved) {
+    const auto out = scratch_dir() / "out";
+    std::filesystem::create_directories(out / ".railodd-staging-999999999" / "sub");
+    test::write_file(out / ".railodd-staging-999999999" / "sub" / "map.xodr", "half");
+    test::write_file(out / ".keep", "user's");
+    {
+        OutputStage stage(out);
+        stage.write_text("a.txt", "A");
+        stage.commit();
+    }
+    EXPECT_FALSE(std::filesystem::exists(out / ".railodd-staging-999999999"));
+    EXPECT_EQ(read(out / ".keep"), "user's");
+    EXPECT_EQ(entries(out), 2u);
+}
+
+// A run killed between its journal and its last rename: the next run into
+// the folder finishes that commit first (roll forward), so the folder never
+// stays a mix of the old and the new run.
+TEST(OutputStage, CommitInterruptedAfterItsJournalIsRolledForward) {
+    const auto out = scratch_dir() / "out";
+    const auto staging = out / ".railodd-staging-12345";
+    std::filesystem::create_directories(staging);
+    test::write_file(out / "a.txt", "old A");
+    test::write_file(out / "b.txt", "new B"); // already moved before the kill
+    test::write_file(out / "gone.txt", "stale");
+    test::write_file(staging / "a.txt", "new A");
+    test::write_file(out / ".railodd-journal", ".railodd-staging-12345\n+ a.txt\n+ b.txt\n- gone.txt\n");
+    {
+        OutputStage stage(out);
+        EXPECT_EQ(read(out / "a.txt"), "new A");
+        EXPECT_EQ(read(out / "b.txt"), "new B");
+        EXPECT_FALSE(std::filesystem::exists(out / "gone.txt"));
+        EXPECT_FALSE(std::filesystem::exists(out / ".railodd-journal"));
+        EXPECT_FALSE(std::filesystem::exists(staging));
+    }
+}
+
+TEST(OutputStage, ASecondRunIntoTheSameFolderIsRefused) {
+    const auto out = scratch_dir() / "out";
+    OutputStage first(out);
+    try {
+        OutputStage second(out);
+        FAIL() << "two stages locked one folder";
+    } catch (const OutputError& e) {
+        EXPECT_NE(std::string{e.what()}.find("another railodd run"), std::string::npos) << e.what();
+    }
+    first.write_text("a.txt", "A");
+    first.commit();
+    EXPECT_EQ(read(out / "a.txt"), "A");
+}
+
+TEST(OutputStage, RemovalsHappenInTheCommitUnlessWrittenAgain) {
+    const auto out = scratch_dir() / "out";
+    std::filesystem::create_directories(out / "distributions");
+    test::write_file(out / "old.xosc", "old");
+    test::write_file(out / "kept.xosc", "old kept");
+    test::write_file(out / "distributions" / "old.xosc", "old");
+    OutputStage stage(out);
+    stage.write_text("kept.xosc", "new kept");
+    stage.remove_on_commit("old.xosc");
+    stage.remove_on_commit("kept.xosc");
+    stage.remove_on_commit("distributions/old.xosc");
+    EXPECT_TRUE(std::filesystem::exists(out / "old.xosc")) << "nothing is removed before the commit";
+    stage.commit();
+    EXPECT_FALSE(std::filesystem::exists(out / "old.xosc"));
+    EXPECT_FALSE(std::filesystem::exists(out / "distributions" / "old.xosc"));
+    EXPECT_EQ(read(out / "kept.xosc"), "new kept");
+}
+
+TEST(OutputStage, NamesOutsideTheFolderAreRefused) {
+    const auto dir = scratch_dir();
+    OutputStage stage(dir / "out");
+    for (const std::string name : {"../x.txt", "/tmp/x.txt", "a/../../x.txt", ".", "", "sub/"}) {
+        EXPECT_THROW(stage.write_text(name, "x"), InputError) << name;
+        EXPECT_THROW(stage.remove_on_commit(name), InputError) << name;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.txt"));
 }
