@@ -1,0 +1,92 @@
+// The alignment fit against ground truth (data/alignment_truth): seeded
+// designs drawn like OSM, fitted at default options, scored against the
+// design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
+// (defaults: 300 routes, sigma 0.1 0.3 1.0). Prints, per sigma, the
+// deviation of the fit from the true centreline, the radius error of every
+// design arc, elements against the design and spurious curvature sign
+// changes: the figures issue 18's targets are stated in.
+#include "railodd/geometry/fit_alignment.hpp"
+#include "railodd/truth/alignment_truth.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace railodd;
+
+namespace {
+
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) {
+        return 0.0;
+    }
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
+}
+
+void run_sigma(int routes, double sigma, double outliers) {
+    std::vector<double> p50, p95, dmax, radius, ratio;
+    long spurious = 0, routes_spurious = 0, over_1m = 0;
+    double km = 0.0, seconds = 0.0;
+    for (int i = 0; i < routes; ++i) {
+        truth::TruthOptions o;
+        o.sigma_m = sigma;
+        o.outlier_fraction = outliers;
+        const truth::TruthRoute r = truth::make_route(1000 + static_cast<std::uint64_t>(i), o);
+        const auto t0 = std::chrono::steady_clock::now();
+        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, {});
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const truth::TruthScore s = truth::score(r, fit.alignment);
+        km += geometry::length(r.design) / 1000.0;
+        p50.push_back(s.deviation_p50_m);
+        p95.push_back(s.deviation_p95_m);
+        dmax.push_back(s.deviation_max_m);
+        over_1m += s.deviation_max_m > 1.0 ? 1 : 0;
+        radius.insert(radius.end(), s.radius_errors.begin(), s.radius_errors.end());
+        ratio.push_back(static_cast<double>(s.fit_elements) / static_cast<double>(s.design_elements));
+        spurious += std::max(0L, s.spurious_sign_changes);
+        routes_spurious += s.spurious_sign_changes > 0 ? 1 : 0;
+    }
+    const auto within = [&](double e) {
+        return 100.0 * static_cast<double>(std::count_if(radius.begin(), radius.end(), [e](double x) { return x <= e; })) /
+               static_cast<double>(std::max<std::size_t>(1, radius.size()));
+    };
+    std::printf("sigma %.1f m, %.1f %% outlier nodes: %d routes, %.0f km, %zu design arcs, fit %.1f s (%.0f km/s)\n",
+                sigma, 100 * outliers, routes, km, radius.size(), seconds, km / std::max(seconds, 1e-9));
+    std::printf("  deviation from the true centreline (m): route p50 median %.3f; route p95 median %.3f, p95 %.3f; "
+                "route max median %.2f, p95 %.2f, max %.2f; routes with max > 1 m: %ld\n",
+                quantile(p50, 0.5), quantile(p95, 0.5), quantile(p95, 0.95), quantile(dmax, 0.5), quantile(dmax, 0.95),
+                quantile(dmax, 1.0), over_1m);
+    std::printf("  arc radius error: p50 %.1f %%, p95 %.1f %%, max %.1f %%; within 2 %%: %.1f %%, within 3 %%: %.1f %%, "
+                "within 8 %%: %.1f %%\n",
+                100 * quantile(radius, 0.5), 100 * quantile(radius, 0.95), 100 * quantile(radius, 1.0), within(0.02),
+                within(0.03), within(0.08));
+    std::printf("  elements / design: median %.2f, p95 %.2f, max %.2f; spurious sign changes: %ld on %ld routes\n",
+                quantile(ratio, 0.5), quantile(ratio, 0.95), quantile(ratio, 1.0), spurious, routes_spurious);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const int routes = argc > 1 ? std::max(1, std::atoi(argv[1])) : 300;
+    std::vector<double> sigmas;
+    double outliers = 0.01;
+    for (int i = 2; i < argc; ++i) {
+        if (std::string{argv[i]} == "--outliers" && i + 1 < argc) {
+            outliers = std::atof(argv[++i]);
+        } else {
+            sigmas.push_back(std::atof(argv[i]));
+        }
+    }
+    if (sigmas.empty()) {
+        sigmas = {0.1, 0.3, 1.0};
+    }
+    for (const double s : sigmas) {
+        run_sigma(routes, s, outliers);
+    }
+    return 0;
+}

@@ -1,0 +1,53 @@
+#pragma once
+// Ground truth for the alignment fit: seeded railway alignments made by design
+// rules (straights, transition curves sized for a design speed, arcs; reverse
+// and compound curves), drawn as OpenStreetMap mappers draw them (nodes far
+// apart on straights, close in curves, lateral scatter, a few outlier nodes),
+// and the scores of a fitted centreline against the design it should recover.
+#include "railodd/geometry/alignment.hpp"
+#include "railodd/geometry/fit_alignment.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace railodd::truth {
+
+struct TruthOptions {
+    double sigma_m = 0.3;            // lateral scatter of the mapped nodes
+    double outlier_fraction = 0.01;  // nodes placed 3-10 m off the centreline
+    double length_m = 8000.0;        // the design is at least this long
+};
+
+struct DesignArc {
+    double s0 = 0.0, s1 = 0.0; // along the design
+    double curvature = 0.0;    // signed, 1/m
+};
+
+struct TruthRoute {
+    geometry::Alignment design;         // G2: lines, clothoids, arcs
+    std::vector<DesignArc> arcs;        // the design's circular arcs
+    std::vector<geometry::Point> nodes; // as mapped
+    std::vector<bool> outlier;          // per node
+    std::size_t sign_changes = 0;       // of the design's curvature (truth::sign_changes)
+};
+
+TruthRoute make_route(std::uint64_t seed, const TruthOptions& options);
+
+struct TruthScore {
+    double deviation_p50_m = 0.0; // distance of the true centreline (every 2 m) to the fit
+    double deviation_p95_m = 0.0;
+    double deviation_max_m = 0.0;
+    std::vector<double> radius_errors; // per design arc: |R_fit / R_true - 1| at the arc's middle
+    std::size_t design_elements = 0;
+    std::size_t fit_elements = 0;
+    long spurious_sign_changes = 0; // fit's curvature sign changes beyond the design's
+};
+
+// Curvature sign changes along an alignment, sampled every 5 m; curvatures
+// below 1/20,000 m count as straight.
+std::size_t sign_changes(const geometry::Alignment& a);
+
+TruthScore score(const TruthRoute& route, const geometry::Alignment& fit);
+
+} // namespace railodd::truth
