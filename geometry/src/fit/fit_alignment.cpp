@@ -6,6 +6,7 @@
 
 #include "curvature_model.hpp"
 #include "least_squares.hpp"
+#include "outlier_nodes.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 #include "segmentation.hpp"
 #include "structure.hpp"
@@ -361,9 +362,18 @@ std::vector<Point2> without_repeats(const std::vector<Point>& in) {
 
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
                         const std::optional<Pose>& end, const FitOptions& o) {
-    const std::vector<Point2> p = without_repeats(points);
-    if (p.size() < 2) {
+    const std::vector<Point2> mapped = without_repeats(points);
+    if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
+    }
+    // Outlier nodes are left out of the fit; its quality is still measured
+    // on every node, so the report shows them.
+    const fit::OutlierScan outliers = fit::find_outlier_nodes(mapped);
+    std::vector<Point2> p;
+    for (std::size_t i = 0; i < mapped.size(); ++i) {
+        if (!outliers.outlier[i]) {
+            p.push_back(mapped[i]);
+        }
     }
     const std::vector<double> t = chainage(p);
     FitResult result;
@@ -413,8 +423,8 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
         i0 = k;
     }
     std::vector<Point> all;
-    all.reserve(p.size());
-    for (const auto& q : p) {
+    all.reserve(mapped.size());
+    for (const auto& q : mapped) {
         all.push_back({q.x, q.y});
     }
     const FitQuality q = measure_fit(result.alignment, all);
