@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <unistd.h> // getpid: one folder per test process (CTest runs tests in parallel; a folder has one writer)
+
 using namespace railodd;
 using namespace railodd::geometry;
 
@@ -27,7 +29,7 @@ struct Fixture {
 const Fixture& fixture() {
     static const Fixture f = [] {
         Fixture x;
-        const auto dir = test::fs::temp_directory_path() / "railodd-tests" / "geometry-sample-route";
+        const auto dir = test::fs::temp_directory_path() / "railodd-tests" / ("geometry-sample-route-" + std::to_string(::getpid()));
         const sample::SampleFiles files = sample::write_sample_route(dir);
         x.truth = nlohmann::json::parse(test::read_file(files.truth));
         x.ingest = ingest::read_osm(files.osm, {});
@@ -121,7 +123,7 @@ TEST(GeometrySampleRoute, MappedNodesLieCloseToTheFittedLine) {
 
 TEST(GeometrySampleRoute, VerticalProfileFollowsTheDesign) {
     const Fixture& f = fixture();
-    const auto dir = test::fs::temp_directory_path() / "railodd-tests" / "geometry-sample-route";
+    const auto dir = test::fs::temp_directory_path() / "railodd-tests" / ("geometry-sample-route-" + std::to_string(::getpid()));
     const ElevationModel dem(dir / "sample_route_dem.tif");
     const auto profiles = fit_profiles(f.graph, f.net, f.ingest.tracks, f.ingest.projection, &dem);
     ASSERT_EQ(profiles.size(), f.net.edges.size());

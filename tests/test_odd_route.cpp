@@ -21,6 +21,8 @@
 
 #include <set>
 
+#include <unistd.h> // getpid: one folder per test process (CTest runs tests in parallel; a folder has one writer)
+
 using namespace railodd;
 using namespace railodd::test;
 
@@ -44,7 +46,7 @@ struct Fixture {
 const Fixture& fixture() {
     static const Fixture f = [] {
         Fixture x;
-        const auto dir = fs::temp_directory_path() / "railodd-tests" / "odd-route";
+        const auto dir = fs::temp_directory_path() / "railodd-tests" / ("odd-route-" + std::to_string(::getpid()));
         const sample::SampleFiles files = sample::write_sample_route(dir);
         x.truth = nlohmann::json::parse(read_file(files.truth));
         x.ingest = ingest::read_osm(files.osm, {});

@@ -17,6 +17,8 @@
 #include <map>
 #include <numbers>
 
+#include <unistd.h> // getpid: one folder per test process (CTest runs tests in parallel; a folder has one writer)
+
 using namespace railodd;
 
 namespace {
@@ -35,7 +37,7 @@ struct Fixture {
 const Fixture& fixture() {
     static const Fixture f = [] {
         Fixture x;
-        const auto dir = test::fs::temp_directory_path() / "railodd-tests" / "xodr-sample-route";
+        const auto dir = test::fs::temp_directory_path() / "railodd-tests" / ("xodr-sample-route-" + std::to_string(::getpid()));
         const sample::SampleFiles files = sample::write_sample_route(dir);
         x.ingest = ingest::read_osm(files.osm, {});
         x.tracks = geometry::build_track_graph(x.ingest.tracks, x.ingest.features);
