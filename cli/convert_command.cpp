@@ -263,20 +263,40 @@ std::optional<odd::Route> route_profile(const ConvertOptions& o, const ingest::I
 
 } // namespace
 
+namespace {
+
+ingest::IngestResult read_input(const ConvertOptions& o) {
+    const ingest::Selection selection = make_selection(o);
+    if (ingest::is_vector_source(o.input)) {
+        return ingest::read_vector(o.input, o.field_mapping, selection);
+    }
+    ingest::IngestOptions io;
+    io.selection = selection;
+    io.road_corridor_m = o.road_corridor_m;
+    io.feature_distance_m = o.feature_distance_m;
+    io.station_distance_m = o.station_distance_m;
+    return ingest::read_osm(o.input, io);
+}
+
+// report.json's sections of every stage, in pipeline order.
+nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const Geometry& geo,
+                                     nlohmann::ordered_json geometry_report, const xodr::MapBuild& map,
+                                     const xodr::MapInput& map_input) {
+    nlohmann::ordered_json report = make_report(result);
+    report["geometry"] = std::move(geometry_report);
+    report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
+    report["cant"] = geometry::cants_report(geo.cants);
+    report["topology"] = geometry::topology_report(geo.crossings, geo.attachment, result.features);
+    report["opendrive"] = xodr::map_report(map, map_input);
+    report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
+    return report;
+}
+
+} // namespace
+
 int ConvertCommand::run() {
     // Phase 1: ingest the selected tracks, features and roads into the local frame.
-    const ingest::Selection selection = make_selection(opt_);
-    ingest::IngestResult result;
-    if (ingest::is_vector_source(opt_.input)) {
-        result = ingest::read_vector(opt_.input, opt_.field_mapping, selection);
-    } else {
-        ingest::IngestOptions io;
-        io.selection = selection;
-        io.road_corridor_m = opt_.road_corridor_m;
-        io.feature_distance_m = opt_.feature_distance_m;
-        io.station_distance_m = opt_.station_distance_m;
-        result = ingest::read_osm(opt_.input, io);
-    }
+    ingest::IngestResult result = read_input(opt_);
 
     // Phase 2: track graph, railway-grade centrelines and profiles, road
     // centrelines; then crossings, and features placed on the tracks.
@@ -338,13 +358,7 @@ int ConvertCommand::run() {
     profile_written.get();
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
-    nlohmann::ordered_json report = make_report(result);
-    report["geometry"] = std::move(geometry_report);
-    report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
-    report["cant"] = geometry::cants_report(geo.cants);
-    report["topology"] = geometry::topology_report(geo.crossings, geo.attachment, result.features);
-    report["opendrive"] = xodr::map_report(map, map_input);
-    report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
+    nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input);
     if (route) {
         report["route"] = odd::route_report(*route);
     }

@@ -77,10 +77,6 @@ nlohmann::json old_manifest(const fs::path& file) {
     return j.is_object() ? j : nullptr;
 }
 
-bool ends_with(const std::string& s, std::string_view tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 // The files an earlier run's manifest lists: its scenarios, behaviours and
 // distributions. Those this run does not write again are removed in its
 // commit; only names railodd itself writes there are taken, whatever the old
@@ -97,7 +93,7 @@ std::vector<std::string> earlier_files(const nlohmann::json& old) {
         } else if (folder) {
             return;
         }
-        if (is_safe_name(name) && ends_with(name, tail)) {
+        if (is_safe_name(name) && name.ends_with(tail)) {
             out.push_back((folder ? folder : "") + name);
         }
     };

@@ -126,9 +126,8 @@ std::string data_timestamp(const fs::path& file) {
     return std::regex_match(t, iso) ? t : std::string{};
 }
 
-} // namespace
-
-IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
+// A readable OSM file; a PBF one's string tables hold no NUL (pbf_strings.hpp).
+void check_osm_input(const fs::path& file) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
         throw InputError(file.string(), fs::exists(file, ec) ? "not a regular file" : "no such file");
@@ -136,6 +135,84 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     if (osmium::io::File{file.string()}.format() == osmium::io::file_format::pbf) {
         check_pbf_strings(file);
     }
+}
+
+// Every node the ways read reference.
+NodeLocations wanted_nodes(const WayScan& ways) {
+    NodeLocations locs;
+    for (const auto& w : ways.tracks) {
+        locs.want_all(w.refs);
+    }
+    for (const auto& f : ways.area_features) {
+        locs.want_all(f.refs);
+    }
+    for (const auto& r : ways.roads) {
+        locs.want_all(r.refs);
+    }
+    for (const auto& l : ways.land_use) {
+        locs.want_all(l.way.refs);
+    }
+    locs.seal();
+    return locs;
+}
+
+void add_duplicate_node_repairs(const NodeScan& nodes, IngestResult& result) {
+    for (const auto& d : nodes.duplicates) {
+        char at[64];
+        std::snprintf(at, sizeof at, "%.7f, %.7f", d.ignored.lon, d.ignored.lat);
+        result.repairs.push_back({"node", "node", d.id,
+                                  std::string{"the id occurs again at another location ("} + at +
+                                      "): the first location kept, the later one ignored"});
+    }
+}
+
+// Refuses a selection left without a usable track, saying why.
+void require_tracks(const fs::path& file, const Selection& sel, const RelationScan& relations,
+                    const IngestResult& result) {
+    if (!result.tracks.empty()) {
+        return;
+    }
+    if (sel.relation) {
+        throw InputError(file.string(), "relation " + std::to_string(*sel.relation) + " has no railway track member " +
+                                            "with located nodes in the selection (" + result.selection + "; " +
+                                            std::to_string(relations.route_ways.size()) + " member way(s))");
+    }
+    throw InputError(file.string(), "no usable railway track way in the selection (" + result.selection + "); " +
+                                        std::to_string(result.dropped.size()) + " track way(s) dropped" +
+                                        (result.dropped.empty() ? std::string{}
+                                                                : ", e.g. way " +
+                                                                      std::to_string(result.dropped.front().id) +
+                                                                      ": " + result.dropped.front().reason));
+}
+
+// Land-use areas that may hold a track: from the ways pass when it kept
+// them all, else read around the tracks.
+void add_land_use(const fs::path& file, const IngestOptions& options, WayScan& ways, const RelationScan& relations,
+                  const NodeLocations& locs, IngestResult& result) {
+    const LandUseContext lc{file, lonlat_bounds(result.tracks, 0.0),
+                            lonlat_bounds(result.tracks, options.land_use_search_m)};
+    if (ways.land_use_complete) {
+        build_land_use(std::move(ways.land_use), relations.land_use, locator_of(locs), lc, result);
+    } else {
+        read_land_use_near(lc, relations, result);
+    }
+}
+
+// Roads in the corridor around the tracks, likewise.
+void add_roads(const fs::path& file, const IngestOptions& options, const SegmentGrid& grid, WayScan& ways,
+               const NodeLocations& locs, IngestResult& result) {
+    RoadContext rc{file, options.road_corridor_m, grid, lonlat_bounds(result.tracks, options.road_corridor_m)};
+    if (ways.roads_complete) {
+        select_prefetched_roads(std::move(ways.roads), locs, rc, result);
+    } else {
+        read_corridor_roads(rc, result);
+    }
+}
+
+} // namespace
+
+IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
+    check_osm_input(file);
     const Selection& sel = options.selection;
     PhaseTimer timer;
     IngestResult result;
@@ -174,49 +251,18 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     WayScan ways = scan_track_ways(file, sel.relation ? &relations.route_ways : nullptr, road_refs_cap, land_use,
                                    near_box ? &near_nodes : nullptr);
     std::vector<std::int64_t>().swap(near_nodes);
-    NodeLocations locs;
-    for (const auto& w : ways.tracks) {
-        locs.want_all(w.refs);
-    }
-    for (const auto& f : ways.area_features) {
-        locs.want_all(f.refs);
-    }
-    for (const auto& r : ways.roads) {
-        locs.want_all(r.refs);
-    }
-    for (const auto& l : ways.land_use) {
-        locs.want_all(l.way.refs);
-    }
-    locs.seal();
+    NodeLocations locs = wanted_nodes(ways);
 
     // Phase 4: locations of exactly those nodes, and railway point features.
     timer.start("read_nodes");
     NodeScan nodes = scan_nodes(file, locs, near_box ? &*near_box : nullptr);
     result.counts.input_nodes = nodes.node_count;
-    for (const auto& d : nodes.duplicates) {
-        char at[64];
-        std::snprintf(at, sizeof at, "%.7f, %.7f", d.ignored.lon, d.ignored.lat);
-        result.repairs.push_back({"node", "node", d.id,
-                                  std::string{"the id occurs again at another location ("} + at +
-                                      "): the first location kept, the later one ignored"});
-    }
+    add_duplicate_node_repairs(nodes, result);
 
     // Phase 5: the selection, the local frame and the track geometry in it.
     timer.start("select_and_project");
     select_tracks(ways.tracks, locs, sel, result);
-    if (result.tracks.empty() && sel.relation) {
-        throw InputError(file.string(), "relation " + std::to_string(*sel.relation) + " has no railway track member " +
-                                            "with located nodes in the selection (" + result.selection + "; " +
-                                            std::to_string(relations.route_ways.size()) + " member way(s))");
-    }
-    if (result.tracks.empty()) {
-        throw InputError(file.string(), "no usable railway track way in the selection (" + result.selection +
-                                            "); " + std::to_string(result.dropped.size()) + " track way(s) dropped" +
-                                            (result.dropped.empty() ? std::string{}
-                                                                    : ", e.g. way " +
-                                                                          std::to_string(result.dropped.front().id) +
-                                                                          ": " + result.dropped.front().reason));
-    }
+    require_tracks(file, sel, relations, result);
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);
     check_frame_extent(result.tracks, file.string());
@@ -232,24 +278,13 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     // Phase 7: land-use areas that may hold a track.
     if (options.land_use) {
         timer.start("read_land_use");
-        const LandUseContext lc{file, lonlat_bounds(result.tracks, 0.0),
-                                lonlat_bounds(result.tracks, options.land_use_search_m)};
-        if (ways.land_use_complete) {
-            build_land_use(std::move(ways.land_use), relations.land_use, locator_of(locs), lc, result);
-        } else {
-            read_land_use_near(lc, relations, result);
-        }
+        add_land_use(file, options, ways, relations, locs, result);
     }
 
     // Phase 8: roads in the corridor around the tracks.
     if (options.road_corridor_m > 0) {
         timer.start("read_roads");
-        RoadContext rc{file, options.road_corridor_m, grid, lonlat_bounds(result.tracks, options.road_corridor_m)};
-        if (ways.roads_complete) {
-            select_prefetched_roads(std::move(ways.roads), locs, rc, result);
-        } else {
-            read_corridor_roads(rc, result);
-        }
+        add_roads(file, options, grid, ways, locs, result);
     }
     timer.stop();
     finalize(result);

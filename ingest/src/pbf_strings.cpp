@@ -120,7 +120,7 @@ bool is_bad(const std::vector<std::uint32_t>& bad, std::uint64_t index) {
 
 // Keys (field 2), values (3) and, for relations, member roles (8) of a Node,
 // Way or Relation message.
-std::optional<Use> use_in_object(protozero::pbf_reader obj, const char* type, bool zigzag_id,
+std::optional<Use> use_in_object(protozero::pbf_reader obj, const char* type, bool zigzag_id, bool roles,
                                  const std::vector<std::uint32_t>& bad) {
     std::int64_t id = 0;
     const char* what = nullptr;
@@ -132,8 +132,7 @@ std::optional<Use> use_in_object(protozero::pbf_reader obj, const char* type, bo
             for (const auto i : obj.get_packed_uint32()) {
                 what = !what && is_bad(bad, i) ? name : what;
             }
-        } else if (obj.tag() == 8 && obj.wire_type() == protozero::pbf_wire_type::length_delimited &&
-                   std::strcmp(type, "relation") == 0) {
+        } else if (roles && obj.tag() == 8 && obj.wire_type() == protozero::pbf_wire_type::length_delimited) {
             for (const auto i : obj.get_packed_int32()) {
                 what = !what && i >= 0 && is_bad(bad, static_cast<std::uint64_t>(i)) ? "member role" : what;
             }
@@ -190,10 +189,10 @@ std::optional<Use> first_use(std::string_view block, const std::vector<std::uint
         while (group.next()) {
             std::optional<Use> use;
             switch (group.wire_type() == protozero::pbf_wire_type::length_delimited ? group.tag() : 0) {
-            case 1: use = use_in_object(group.get_message(), "node", true, bad); break;
+            case 1: use = use_in_object(group.get_message(), "node", true, false, bad); break;
             case 2: use = use_in_dense(group.get_message(), bad); break;
-            case 3: use = use_in_object(group.get_message(), "way", false, bad); break;
-            case 4: use = use_in_object(group.get_message(), "relation", false, bad); break;
+            case 3: use = use_in_object(group.get_message(), "way", false, false, bad); break;
+            case 4: use = use_in_object(group.get_message(), "relation", false, true, bad); break;
             default: group.skip(); break;
             }
             if (use) {

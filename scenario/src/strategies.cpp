@@ -148,6 +148,18 @@ const char* to_string(Strategy s) {
     return "?";
 }
 
+namespace {
+
+double combinations(const std::vector<std::size_t>& sizes) {
+    double product = 1.0;
+    for (const auto n : sizes) {
+        product *= static_cast<double>(n);
+    }
+    return product;
+}
+
+} // namespace
+
 Strategy strategy_from(const std::string& name) {
     if (name == "full") return Strategy::full;
     if (name == "pairwise") return Strategy::pairwise;
@@ -160,10 +172,7 @@ std::vector<Row> full_factorial(const std::vector<std::size_t>& sizes, const Val
     if (empty_domain(sizes)) {
         return rows;
     }
-    double product = 1.0;
-    for (const auto s : sizes) {
-        product *= static_cast<double>(s);
-    }
+    const double product = combinations(sizes);
     if (product > static_cast<double>(limit)) {
         throw std::length_error("the full factorial has " + std::to_string(static_cast<long long>(product)) +
                                 " rows, more than " + std::to_string(limit));
@@ -208,6 +217,43 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
     return rows;
 }
 
+namespace {
+
+// Index draws by rejection, not std::uniform_int_distribution, whose
+// algorithm differs between standard libraries.
+class IndexDraw {
+public:
+    explicit IndexDraw(std::uint64_t seed) : rng_(seed) {}
+    std::size_t operator()(std::size_t n) {
+        const std::uint64_t bound = UINT64_MAX - UINT64_MAX % n;
+        std::uint64_t x = 0;
+        do {
+            x = rng_();
+        } while (x >= bound);
+        return static_cast<std::size_t>(x % n);
+    }
+
+private:
+    std::mt19937_64 rng_;
+};
+
+// Appends valid rows not in `seen`, in seeded order, until `rows` holds `count`.
+void complete_from(const std::vector<Row>& all, const std::set<Row>& seen, std::size_t count, IndexDraw& draw,
+                   std::vector<Row>& rows) {
+    std::vector<Row> rest;
+    for (const auto& r : all) {
+        if (!seen.contains(r)) {
+            rest.push_back(r);
+        }
+    }
+    for (std::size_t i = 0; i < rest.size() && rows.size() < count; ++i) {
+        std::swap(rest[i], rest[i + draw(rest.size() - i)]);
+        rows.push_back(std::move(rest[i]));
+    }
+}
+
+} // namespace
+
 std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t count,
                              std::uint64_t seed, bool* every_valid_row) {
     std::vector<Row> rows;
@@ -217,30 +263,17 @@ std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validi
     if (empty_domain(sizes) || count == 0) {
         return rows;
     }
-    double product = 1.0;
-    for (const auto s : sizes) {
-        product *= static_cast<double>(s);
-    }
     // Where the request comes near the number of combinations, rejection
     // draws mostly collide: the valid rows are listed first, so the count is
     // capped at them and the draw completed from them (never unbounded).
+    const double product = combinations(sizes);
     const bool enumerable = product <= static_cast<double>(random_enumeration_limit);
     std::optional<std::vector<Row>> all;
     if (enumerable && static_cast<double>(count) * 8.0 >= product) {
         all = full_factorial(sizes, valid, random_enumeration_limit);
         count = std::min(count, all->size());
     }
-    std::mt19937_64 rng(seed);
-    // Index draws by rejection, not std::uniform_int_distribution, whose
-    // algorithm differs between standard libraries.
-    auto draw = [&rng](std::size_t n) {
-        const std::uint64_t bound = UINT64_MAX - UINT64_MAX % n;
-        std::uint64_t x = 0;
-        do {
-            x = rng();
-        } while (x >= bound);
-        return static_cast<std::size_t>(x % n);
-    };
+    IndexDraw draw(seed);
     std::set<Row> seen;
     const std::size_t attempts = count > random_attempt_limit / 1000 ? random_attempt_limit : 1000 * count;
     for (std::size_t a = 0; a < attempts && rows.size() < count; ++a) {
@@ -253,20 +286,10 @@ std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validi
         }
     }
     if (rows.size() < count && enumerable) {
-        // The draws fell short: complete from the rows not drawn, in seeded order.
         if (!all) {
             all = full_factorial(sizes, valid, random_enumeration_limit);
         }
-        std::vector<Row> rest;
-        for (auto& r : *all) {
-            if (!seen.contains(r)) {
-                rest.push_back(std::move(r));
-            }
-        }
-        for (std::size_t i = 0; i < rest.size() && rows.size() < count; ++i) {
-            std::swap(rest[i], rest[i + draw(rest.size() - i)]);
-            rows.push_back(std::move(rest[i]));
-        }
+        complete_from(*all, seen, count, draw, rows); // the draws fell short
     }
     if (every_valid_row && all) {
         *every_valid_row = rows.size() == all->size();
