@@ -29,7 +29,7 @@ double quantile(std::vector<double> v, double q) {
 }
 
 void run_sigma(int routes, double sigma, double outliers) {
-    std::vector<double> p50, p95, dmax, radius, ratio;
+    std::vector<double> p50, p95, dmax, radius, ratio, noise;
     long spurious = 0, routes_spurious = 0, over_1m = 0;
     double km = 0.0, seconds = 0.0;
     for (int i = 0; i < routes; ++i) {
@@ -41,6 +41,7 @@ void run_sigma(int routes, double sigma, double outliers) {
         const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, {});
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const truth::TruthScore s = truth::score(r, fit.alignment);
+        noise.push_back(fit.quality.noise_sigma_m / sigma);
         km += geometry::length(r.design) / 1000.0;
         p50.push_back(s.deviation_p50_m);
         p95.push_back(s.deviation_p95_m);
@@ -65,6 +66,8 @@ void run_sigma(int routes, double sigma, double outliers) {
                 "within 8 %%: %.1f %%\n",
                 100 * quantile(radius, 0.5), 100 * quantile(radius, 0.95), 100 * quantile(radius, 1.0), within(0.02),
                 within(0.03), within(0.08));
+    std::printf("  estimated noise / sigma: p5 %.2f, median %.2f, p95 %.2f\n", quantile(noise, 0.05),
+                quantile(noise, 0.5), quantile(noise, 0.95));
     std::printf("  elements / design: median %.2f, p95 %.2f, max %.2f; spurious sign changes: %ld on %ld routes\n",
                 quantile(ratio, 0.5), quantile(ratio, 0.95), quantile(ratio, 1.0), spurious, routes_spurious);
 }

@@ -47,8 +47,8 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--field-mapping", opt_.field_mapping, "YAML mapping of vector fields onto OSM tags");
     app->add_option("--dem", opt_.dem, "Elevation raster(s) for the vertical profile (repeat for several tiles)");
     app->add_option("--node-noise", opt_.node_noise_m,
-                    "Expected scatter (m) of mapped track nodes about the true centreline; the fit's model selection scale")
-        ->capture_default_str()
+                    "Scatter (m) of mapped track nodes about the true centreline, the fit's model selection scale; "
+                    "default: estimated per chain from its nodes")
         ->check(finite_range(0.01, 5.0));
     app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
         ->capture_default_str()

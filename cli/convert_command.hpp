@@ -20,7 +20,7 @@ struct ConvertOptions {
     std::string field_mapping;
     std::vector<std::string> dem; // elevation rasters (GeoTIFF, HGT, VRT; several tiles)
     double road_corridor_m = 300.0;
-    double node_noise_m = 0.1; // OSM track nodes traced from imagery: about a decimetre
+    double node_noise_m = 0.0; // 0: estimated per chain from its nodes (report.json geometry.summary.node_noise)
     double feature_distance_m = 50.0;
     double station_distance_m = 500.0;
     unsigned threads = 0; // 0: libosmium's default pool size

@@ -49,9 +49,11 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
                           const std::optional<Pose>& end, const FitOptions& o) {
     const FitResult r = fit_alignment(p, start, end, o);
     double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.max_m;
-    ChainFit best{r.alignment, ChainMethod::railway, 0};
+    ChainFit best{r.alignment, ChainMethod::railway, 0, r.quality.noise_sigma_m, r.quality.outliers};
     if ((start || end) && worst > retry_deviation_m) {
         ChainFit s = spliced_fit(p, start, end, o);
+        s.noise_sigma_m = best.noise_sigma_m;
+        s.outliers = best.outliers;
         const double m = loops_back(s.alignment, p) ? std::numeric_limits<double>::infinity() : measure_fit(s.alignment, p).max_m;
         if (m < worst) {
             best = std::move(s);
@@ -62,7 +64,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
         // No railway-grade sequence came within reach of every mapped node
         // (tram corners, kinks): lines with clothoid corners keep every node
         // close and the ties exact.
-        return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0};
+        return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0, best.noise_sigma_m, 0};
     }
     if (best.method == ChainMethod::railway && end && misses(end_miss(best.alignment, *end))) {
         // The fit holds its end pose as a constraint, but a window whose

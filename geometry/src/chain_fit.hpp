@@ -21,6 +21,8 @@ struct ChainFit {
     Alignment alignment;
     ChainMethod method = ChainMethod::railway;
     std::size_t spliced_ends = 0;
+    double noise_sigma_m = 0.0; // node scatter the railway fit assumed (FitQuality)
+    std::size_t outliers = 0;   // nodes it left out as outliers
 };
 
 ChainFit fit_chain_points(const std::vector<Point>& points, const std::optional<Pose>& start,

@@ -35,6 +35,7 @@ double round_to(double v, double unit) { return std::round(v / unit) * unit; }
 
 struct Totals {
     std::vector<double> d;
+    std::vector<double> d_over_noise; // node distances in units of their chain's noise estimate
     double length = 0.0;
     std::size_t fallback = 0;
 };
@@ -46,18 +47,52 @@ ordered_json track_entry(const GraphEdge& e, const FittedEdge& f, const IndexedA
     }
     const std::vector<double> d = indexed ? distances(*indexed, pts) : distances(f.alignment, pts);
     t.d.insert(t.d.end(), d.begin(), d.end());
+    if (f.quality.noise_sigma_m > 0.0) {
+        for (const double x : d) {
+            t.d_over_noise.push_back(x / f.quality.noise_sigma_m);
+        }
+    }
     t.length += length(f.alignment);
-    return {{"edge", e.id},
-            {"osm_ways", way_ids(e)},
-            {"from_node", e.nodes.front().id},
-            {"to_node", e.nodes.back().id},
-            {"reversed", f.reversed},
-            {"length_m", round_to(length(f.alignment), 1e-3)},
-            {"primitives", primitive_counts(f.alignment)},
-            {"nodes", f.quality.points},
-            {"rms_m", round_to(f.quality.rms_m, 1e-4)},
-            {"p95_m", round_to(f.quality.p95_m, 1e-4)},
-            {"max_m", round_to(f.quality.max_m, 1e-4)}};
+    ordered_json entry = {{"edge", e.id},
+                          {"osm_ways", way_ids(e)},
+                          {"from_node", e.nodes.front().id},
+                          {"to_node", e.nodes.back().id},
+                          {"reversed", f.reversed},
+                          {"length_m", round_to(length(f.alignment), 1e-3)},
+                          {"primitives", primitive_counts(f.alignment)},
+                          {"nodes", f.quality.points},
+                          {"rms_m", round_to(f.quality.rms_m, 1e-4)},
+                          {"p95_m", round_to(f.quality.p95_m, 1e-4)},
+                          {"max_m", round_to(f.quality.max_m, 1e-4)}};
+    if (f.quality.noise_sigma_m > 0.0) {
+        entry["noise_sigma_m"] = round_to(f.quality.noise_sigma_m, 1e-4);
+    }
+    return entry;
+}
+
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) {
+        return 0.0;
+    }
+    std::sort(v.begin(), v.end());
+    return v[static_cast<std::size_t>(std::floor(q * static_cast<double>(v.size() - 1)))];
+}
+
+// The node scatter the fit assumed per chain and whether the node distances
+// agree with it (p95 within about 2 sigma where the fit reads the design).
+ordered_json noise_entry(const FittedNetwork& net, const Totals& t) {
+    std::vector<double> s;
+    for (const double x : net.chain_noise_sigma_m) {
+        if (x > 0.0) {
+            s.push_back(x);
+        }
+    }
+    return {{"chain_sigma_p50_m", round_to(quantile(s, 0.5), 1e-4)},
+            {"chain_sigma_p95_m", round_to(quantile(s, 0.95), 1e-4)},
+            {"chain_sigma_max_m", round_to(quantile(s, 1.0), 1e-4)},
+            {"outlier_nodes", net.outlier_nodes},
+            {"node_distance_p95_sigmas", round_to(quantile(t.d_over_noise, 0.95), 1e-3)},
+            {"node_distance_max_sigmas", round_to(quantile(t.d_over_noise, 1.0), 1e-3)}};
 }
 
 ordered_json links_entry(const FittedNetwork& net) {
@@ -107,6 +142,9 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
                             {"node_distance_p95_m", round_to(pct(0.95), 1e-4)},
                             {"node_distance_max_m", round_to(t.d.empty() ? 0.0 : t.d.back(), 1e-4)},
                             {"links", links_entry(net)}};
+    if (!net.chain_noise_sigma_m.empty()) {
+        summary["node_noise"] = noise_entry(net, t);
+    }
     return {{"summary", summary}, {"tracks", tracks}};
 }
 

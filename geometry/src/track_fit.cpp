@@ -75,6 +75,8 @@ public:
         corner_chain_.assign(chains_.size(), 0);
         chain_degenerate_.assign(chains_.size(), 0);
         chain_spliced_.assign(chains_.size(), 0);
+        chain_noise_.assign(chains_.size(), 0.0);
+        chain_outliers_.assign(chains_.size(), 0);
         geometry_.reserve(chains_.size());
         for (std::size_t c = 0; c < chains_.size(); ++c) {
             geometry_.push_back(chain_points(g_, chains_[c]));
@@ -306,6 +308,8 @@ private:
             ChainFit fit = fit_chain_points(cg.points, start, end, o_);
             corner_chain_[c] = fit.method == ChainMethod::corners ? 1 : 0;
             chain_spliced_[c] = fit.spliced_ends;
+            chain_noise_[c] = fit.noise_sigma_m;
+            chain_outliers_[c] = fit.outliers;
             a = std::move(fit.alignment);
         }
         FittedChain& f = fitted_[c];
@@ -349,6 +353,7 @@ private:
                     pts.push_back({n.xy.x, n.xy.y});
                 }
                 fe.quality = measure_fit(fe.alignment, pts);
+                fe.quality.noise_sigma_m = chain_noise_[c];
             }
             report_links(c, net);
         }
@@ -357,6 +362,10 @@ private:
         net.degenerate_chains = degenerate_;
         net.corner_chains = fallback_;
         net.spliced_ends = spliced_;
+        net.chain_noise_sigma_m = chain_noise_;
+        for (const std::size_t k : chain_outliers_) {
+            net.outlier_nodes += k;
+        }
         return net;
     }
 
@@ -394,6 +403,8 @@ private:
     std::vector<char> corner_chain_;
     std::vector<char> chain_degenerate_;
     std::vector<std::size_t> chain_spliced_;
+    std::vector<double> chain_noise_;
+    std::vector<std::size_t> chain_outliers_;
     std::size_t untied_ = 0;
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;

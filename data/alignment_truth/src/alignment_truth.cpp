@@ -104,14 +104,16 @@ bool curved_at(const Alignment& a, const std::vector<double>& starts, double s) 
 
 // Mapped nodes: 50-250 m apart on straights (but one soon after a curve
 // begins, as mappers densify there), 5-40 m in curves; lateral scatter and
-// outliers across the line.
+// outliers across the line. The first and last nodes are never outliers: a
+// chain ends at a vertex (switch, buffer stop) that other ways share, whose
+// misplacement would bend them all.
 void draw(TruthRoute& r, Rng& rng, const TruthOptions& o) {
     const geometry::IndexedAlignment ia(r.design);
     const std::vector<double> starts = geometry::primitive_s(r.design);
     const double total = ia.length();
     for (double s = 0.0;;) {
         const geometry::Pose p = ia.evaluate(s);
-        const bool out = rng.uniform() < o.outlier_fraction;
+        const bool out = rng.uniform() < o.outlier_fraction && s > 0.0 && s < total;
         const double off = out ? (rng.uniform() < 0.5 ? -1.0 : 1.0) * rng.uniform(3.0, 10.0) : o.sigma_m * rng.normal();
         r.nodes.push_back({p.x - off * std::sin(p.hdg), p.y + off * std::cos(p.hdg)});
         r.outlier.push_back(out);

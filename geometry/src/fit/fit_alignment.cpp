@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <set>
 #include <stdexcept>
 
 namespace railodd::geometry {
@@ -195,35 +196,50 @@ struct WindowFit {
 
 std::size_t free_parameters(const CurvatureModel& m) { return fit::ParameterMap(m).size(); }
 
-// The largest residual sum of squares a structured fit with ps free
-// parameters may have and still count as good as the fine spline (pf
-// parameters, residual sum rss_f over n points): an F-test, the extra
-// parameters of the spline must buy a significant improvement or the simpler
-// model wins.
-double acceptable_rss(double rss_f, std::size_t ps, std::size_t pf, std::size_t n, double sigma) {
-    if (pf <= ps || n <= pf) {
-        return rss_f * 1.1 + 1e-12;
+// Penalised likelihood of a fit with k free parameters over n points at
+// noise sigma: -2 log L + k log n (BIC), the design with the least wins: a
+// parameter must buy log n squared sigmas of residual. The likelihood is
+// robust: a node counts at most `cap` squared sigmas (a normal scatter with
+// a few gross errors), so that one node out of line can never buy the
+// handful of parameters of a reverse-curve wiggle through it.
+struct Criterion {
+    static constexpr double cap = 25.0; // (5 sigma)^2: 3 sigma let real extracts' designs cut corners
+    double sigma = 0.1;
+    std::size_t n = 0;
+    double per_parameter() const { return std::log(static_cast<double>(std::max<std::size_t>(n, 3))); }
+    double score(double rss, std::size_t k) const {
+        return rss / (sigma * sigma) + per_parameter() * static_cast<double>(k);
     }
-    // The spline's residuals never fall below the mapping noise by much; the
-    // floor keeps an overfitting spline from rejecting the right structure.
-    const double noise_var = std::max(rss_f / static_cast<double>(n), 0.8 * sigma * sigma);
-    return rss_f + 2.0 * static_cast<double>(pf - ps) * noise_var;
-}
+    double score(const std::vector<double>& d, std::size_t k) const {
+        double sum = 0.0;
+        for (const double x : d) {
+            sum += std::min(cap, x * x / (sigma * sigma));
+        }
+        return sum + per_parameter() * static_cast<double>(k);
+    }
+    // The residual sum a fit with k parameters must stay below to score under `bound`.
+    double rss_below(double bound, std::size_t k) const {
+        return (bound - per_parameter() * static_cast<double>(k)) * sigma * sigma;
+    }
+};
 
-// Is the structured fit as good as the fine spline? Its residual sum within
-// acceptable_rss, and its largest deviation no more than two noise sigmas
-// beyond the spline's.
-bool as_good(const fit::SolveReport& s, std::size_t ps, const fit::SolveReport& f, std::size_t pf, std::size_t n,
-             double sigma) {
-    if (s.gave_up || s.max_m > f.max_m + 2 * sigma) {
-        return false;
+// Joints where one transition runs straight into another away from zero
+// curvature: no railway is designed so (between two transitions there is an
+// arc, or they meet at zero in a reverse curve). Each costs the criterion as
+// much as two parameters: the prior of the design rules, which lets the data
+// insist where such a joint is real (curvature read off a badly mapped
+// stretch) but not a few noisy nodes.
+std::size_t kinked_transitions(const Alignment& a) {
+    constexpr double straight = 1.0 / 20000.0;
+    std::size_t n = 0;
+    for (std::size_t i = 1; i < a.primitives.size(); ++i) {
+        const Primitive& u = a.primitives[i - 1];
+        const Primitive& v = a.primitives[i];
+        if (u.kind == PrimitiveKind::spiral && v.kind == PrimitiveKind::spiral && std::abs(v.curv_start) > straight) {
+            ++n;
+        }
     }
-    const double rss_s = s.rms_m * s.rms_m * static_cast<double>(n);
-    const double rss_f = f.rms_m * f.rms_m * static_cast<double>(n);
-    if (pf <= ps || n <= pf) {
-        return rss_s <= acceptable_rss(rss_f, ps, pf, n, sigma);
-    }
-    return rss_s < acceptable_rss(rss_f, ps, pf, n, sigma);
+    return n;
 }
 
 // Candidate structures read off the curvature diagram at several noise
@@ -249,6 +265,54 @@ std::vector<std::vector<fit::Piece>> candidate_structures(const std::vector<doub
     return out;
 }
 
+// The design of least penalised-likelihood score among the candidates read
+// off the fine spline's curvature diagram (ks, kk); nothing where none is
+// near enough the nodes. The fine spline is no design. Candidates come
+// simplest first, so the loop stops once even a perfect fit (the fine
+// spline's residuals) could not beat the best.
+std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::vector<double>& ks,
+                                     const std::vector<double>& kk, const fit::StructureEnds& se,
+                                     fit::SolveOptions so, const fit::SolveReport& fine_report, double sigma) {
+    const Criterion crit{sigma, p.size()};
+    const double rss_f = fine_report.rms_m * fine_report.rms_m * static_cast<double>(p.size());
+    // A design may leave a node half a metre (or three sigmas) further than
+    // the spline does, no more: the capped likelihood would not see a corner
+    // cut. Beyond 1.5 m only two sigmas: a chain straying 2 m from a node
+    // goes to the corner construction (chain_fit.cpp), a dozen elements per
+    // kilometre more.
+    const double max_allowed =
+        std::max(fine_report.max_m + 2.0 * sigma, std::min(fine_report.max_m + std::max(0.5, 3.0 * sigma), 1.5));
+    std::vector<Point> window_points;
+    for (const Point2& q : p) {
+        window_points.push_back({q.x, q.y});
+    }
+    std::optional<WindowFit> best;
+    double best_score = std::numeric_limits<double>::infinity();
+    for (auto& pieces : candidate_structures(ks, kk)) {
+        CurvatureModel m = fit::build_structure(std::move(pieces), se);
+        const std::size_t ps = free_parameters(m);
+        if (best && crit.score(rss_f, ps) >= best_score) {
+            break;
+        }
+        // The solve's residual sum is not capped: it may exceed the capped
+        // one's bound by what a few far nodes add, hence the slack.
+        so.give_up_rss = std::isfinite(best_score)
+                             ? 2.0 * std::max(0.0, crit.rss_below(best_score, ps)) + rss_f
+                             : std::max(4.0 * rss_f, rss_f + 16.0 * sigma * sigma * static_cast<double>(p.size()));
+        const fit::SolveReport r = fit::solve(m, p, so);
+        if (r.gave_up || !r.end_met || r.max_m > max_allowed || loops_back(m.to_alignment(), window_points)) {
+            continue; // too few parameters to reach the tied end, too far off, or a loop
+        }
+        const double score = crit.score(fit::point_distances(m, p), ps) +
+                             2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(m.to_alignment()));
+        if (score < best_score) {
+            best_score = score;
+            best = WindowFit{std::move(m), r, false};
+        }
+    }
+    return best;
+}
+
 WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
     CurvatureModel fine = fine_spline(p, ends, o);
     fit::SolveOptions so = solve_options(ends, o);
@@ -258,7 +322,7 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     so.kink_sigma = 0.0;
     so.ridge_sigma = 0.0;
     so.geodesic_acceleration = true;
-    so.abandon_loops = true; // a candidate that loops is not chosen (below)
+    so.abandon_loops = true; // a candidate that loops is not chosen (best_design)
 
     std::vector<double> ks, kk;
     double s = 0.0;
@@ -273,24 +337,8 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     if (ends.end) {
         se.end_curvature = ends.end->curvature;
     }
-    // Candidates come simplest first: the first as good as the fine spline wins.
-    const std::size_t pf = free_parameters(fine);
-    std::vector<Point> window_points;
-    for (const Point2& q : p) {
-        window_points.push_back({q.x, q.y});
-    }
-    for (auto& pieces : candidate_structures(ks, kk)) {
-        CurvatureModel m = fit::build_structure(std::move(pieces), se);
-        const std::size_t ps = free_parameters(m);
-        const double rss_f = fine_report.rms_m * fine_report.rms_m * static_cast<double>(p.size());
-        so.give_up_rss = acceptable_rss(rss_f, ps, pf, p.size(), o.noise_sigma_m);
-        const fit::SolveReport r = fit::solve(m, p, so);
-        if (!r.end_met || loops_back(m.to_alignment(), window_points)) {
-            continue; // too few parameters to reach the tied end, or a loop
-        }
-        if (as_good(r, ps, fine_report, pf, p.size(), o.noise_sigma_m)) {
-            return {std::move(m), r, false};
-        }
+    if (auto best = best_design(p, ks, kk, se, so, fine_report, o.noise_sigma_m)) {
+        return std::move(*best);
     }
     if (fine_report.max_m > 1.0) {
         // Nothing came within 1 m of every node: a denser, looser spline
@@ -308,6 +356,81 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
         }
     }
     return {std::move(fine), fine_report, true};
+}
+
+// Where to cut a window's fit: at `preferred` if a straight is there, else
+// at the nearest point of a straight between 35 % and 80 % of the window (at
+// least 20 m into it), else at `preferred` all the same. A window starting
+// inside a curve is tied to the curvature this one read there, and splits
+// the curve in two.
+double window_cut(const Alignment& a, double preferred) {
+    constexpr double inset = 20.0;
+    const double lo = 0.35 / 0.6 * preferred, hi = 0.8 / 0.6 * preferred;
+    double s = 0.0, cut = preferred, best = std::numeric_limits<double>::infinity();
+    for (const auto& q : a.primitives) {
+        const double a0 = std::max(s + inset, lo), a1 = std::min(s + q.length - inset, hi);
+        if (q.kind == PrimitiveKind::line && a0 <= a1) {
+            const double here = std::clamp(preferred, a0, a1);
+            if (std::abs(here - preferred) < best) {
+                best = std::abs(here - preferred);
+                cut = here;
+            }
+        }
+        s += q.length;
+    }
+    return std::min(cut, s);
+}
+
+// Nodes the chosen fit passes far from while it stays close to their
+// neighbours: outliers the scan before the fit could not see (3-10 m off in
+// a curve, where a quadratic through four nodes is no good predictor, or on a
+// straight held by two or three sparse nodes). Each is the largest distance
+// of its neighbourhood and more than max(2 m, 5 sigma); the window's first
+// and last nodes (switches, chain ends, the previous window's pose) stay.
+std::vector<std::size_t> far_nodes(const CurvatureModel& m, const std::vector<Point2>& p, double sigma) {
+    const std::vector<double> d = fit::point_distances(m, p);
+    const double limit = std::max(2.0, 5.0 * sigma);
+    std::vector<std::size_t> out;
+    for (std::size_t i = 1; i + 1 < d.size(); ++i) {
+        if (d[i] > limit && d[i] > 1.5 * d[i - 1] && d[i] > 1.5 * d[i + 1]) {
+            out.push_back(i);
+        }
+    }
+    return out;
+}
+
+// fit_window, again without far nodes until none is left (at most three
+// rounds). `kept` says which of p the fit used.
+WindowFit fit_window_robust(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o,
+                            std::vector<bool>& kept) {
+    kept.assign(p.size(), true);
+    std::vector<Point2> q = p;
+    std::vector<std::size_t> index(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        index[i] = i;
+    }
+    WindowFit w = fit_window(q, ends, o);
+    for (int round = 0; round < 3; ++round) {
+        const std::vector<std::size_t> far = far_nodes(w.model, q, o.noise_sigma_m);
+        if (far.empty()) {
+            break;
+        }
+        std::vector<Point2> q2;
+        std::vector<std::size_t> index2;
+        for (std::size_t i = 0, f = 0; i < q.size(); ++i) {
+            if (f < far.size() && far[f] == i) {
+                kept[index[i]] = false;
+                ++f;
+                continue;
+            }
+            q2.push_back(q[i]);
+            index2.push_back(index[i]);
+        }
+        q = std::move(q2);
+        index = std::move(index2);
+        w = fit_window(q, ends, o);
+    }
+    return w;
 }
 
 } // namespace
@@ -348,6 +471,19 @@ FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& poi
 
 namespace {
 
+// The chain's node scatter as the outlier scan measured it (the MAD of each
+// node's offset from its neighbours' local quadratic), within what mapped
+// the design can be told from: track lies within centimetres of its design
+// (and OSM stores 1e-7 degrees, about a centimetre), and
+// where too few nodes give a scale the value for traced OSM tracks is used.
+double estimated_noise(const fit::OutlierScan& scan) {
+    constexpr double floor_m = 0.05, ceiling_m = 5.0, untested_m = 0.1;
+    if (!(scan.noise_sigma_m > 0.0) || scan.tested < 12) {
+        return scan.tested < 12 ? untested_m : floor_m;
+    }
+    return std::clamp(scan.noise_sigma_m, floor_m, ceiling_m);
+}
+
 std::vector<Point2> without_repeats(const std::vector<Point>& in) {
     std::vector<Point2> out;
     for (const auto& p : in) {
@@ -361,7 +497,7 @@ std::vector<Point2> without_repeats(const std::vector<Point>& in) {
 } // namespace
 
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
-                        const std::optional<Pose>& end, const FitOptions& o) {
+                        const std::optional<Pose>& end, const FitOptions& options) {
     const std::vector<Point2> mapped = without_repeats(points);
     if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
@@ -369,6 +505,10 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     // Outlier nodes are left out of the fit; its quality is still measured
     // on every node, so the report shows them.
     const fit::OutlierScan outliers = fit::find_outlier_nodes(mapped);
+    FitOptions o = options;
+    if (!(o.noise_sigma_m > 0.0)) {
+        o.noise_sigma_m = estimated_noise(outliers);
+    }
     std::vector<Point2> p;
     for (std::size_t i = 0; i < mapped.size(); ++i) {
         if (!outliers.outlier[i]) {
@@ -387,6 +527,7 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
         const double expected = start_hdg + (h.at(t.back()) - h.at(0.0));
         end_pose->hdg += 2 * std::numbers::pi * std::round((expected - end_pose->hdg) / (2 * std::numbers::pi));
     }
+    std::set<std::size_t> far_ones; // of p: nodes a window's fit left out
     std::size_t i0 = 0;
     while (true) {
         std::size_t i1 = i0 + 1;
@@ -399,7 +540,13 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
             }
         }
         const std::vector<Point2> wp(p.begin() + static_cast<long>(i0), p.begin() + static_cast<long>(i1) + 1);
-        WindowFit w = fit_window(wp, {window_start, last ? end_pose : std::nullopt}, o);
+        std::vector<bool> kept;
+        WindowFit w = fit_window_robust(wp, {window_start, last ? end_pose : std::nullopt}, o, kept);
+        for (std::size_t j = 0; j < kept.size(); ++j) {
+            if (!kept[j]) {
+                far_ones.insert(i0 + j);
+            }
+        }
         ++result.quality.windows;
         result.quality.fallback_windows += w.fallback ? 1 : 0;
         Alignment a = w.model.to_alignment();
@@ -410,12 +557,17 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
             result.alignment.primitives.insert(result.alignment.primitives.end(), a.primitives.begin(), a.primitives.end());
             break;
         }
-        // Keep the first ~60 % of the window; the next window starts exactly where it ends.
+        // Keep the first ~60 % of the window; the next window starts exactly
+        // where it ends, on a straight where there is one (a window starting
+        // inside a curve is tied to the curvature this one read there).
+        // The cut is at a node's foot: the next window's first node marks its start.
+        const IndexedAlignment ia(a, 2.0);
+        const double cut = window_cut(a, 0.6 * o.window_m);
         std::size_t k = i0 + 1;
-        while (k < i1 && t[k] - t[i0] < 0.6 * o.window_m) {
+        while (k + 1 < i1 && ia.project(p[k + 1].x, p[k + 1].y).s <= cut) {
             ++k;
         }
-        const double split = IndexedAlignment(a, 2.0).project(p[k].x, p[k].y).s;
+        const double split = ia.project(p[k].x, p[k].y).s;
         const std::vector<Alignment> parts = split_alignment(a, {split});
         const auto& head = parts.front().primitives;
         result.alignment.primitives.insert(result.alignment.primitives.end(), head.begin(), head.end());
@@ -432,6 +584,8 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     result.quality.rms_m = q.rms_m;
     result.quality.p95_m = q.p95_m;
     result.quality.max_m = q.max_m;
+    result.quality.noise_sigma_m = o.noise_sigma_m;
+    result.quality.outliers = far_ones.size() + static_cast<std::size_t>(std::count(outliers.outlier.begin(), outliers.outlier.end(), true));
     return result;
 }
 

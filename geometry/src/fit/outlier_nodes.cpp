@@ -8,55 +8,42 @@ namespace railodd::geometry::fit {
 
 namespace {
 
-constexpr int side = 2;            // kept neighbours each side
-constexpr double min_offset_m = 3.0;
+constexpr std::size_t side = 2;    // neighbours each side of the plain prediction (noise scale)
+constexpr std::size_t wide = 3;    // neighbours each side of the robust prediction
+constexpr double min_offset_m = 2.5;
 constexpr double scale_factor = 5.0;
-// Near a chain's ends the track meets switches and other tracks, whose
-// geometry a quadratic through four nodes does not follow: never marked there.
-constexpr double end_guard_m = 150.0;
+constexpr int robust_rounds = 3;
+constexpr double max_scale_span_m = 150.0; // of the four neighbours a node's scale residual comes from
 
-// Up to `side` kept neighbours of i on each side, or nothing near an end.
-std::optional<std::vector<std::size_t>> neighbours(const std::vector<bool>& gone, std::size_t i) {
+// `each` neighbours of i on each side; next to a chain end, as many as there
+// are on that side (at least one) and the rest from the other.
+std::optional<std::vector<std::size_t>> neighbours(std::size_t n, std::size_t i, std::size_t each) {
+    if (i == 0 || i + 1 >= n || n < 2 * each + 1) {
+        return std::nullopt;
+    }
+    const std::size_t before = std::min(each, i), after = std::min(each, n - 1 - i);
+    const std::size_t lo = i - std::min(i, before + (each - after)), hi = std::min(n - 1, i + after + (each - before));
     std::vector<std::size_t> nb;
-    for (std::size_t j = i, found = 0; j > 0 && found < side;) {
-        --j;
-        if (!gone[j]) {
+    for (std::size_t j = lo; j <= hi; ++j) {
+        if (j != i) {
             nb.push_back(j);
-            ++found;
         }
-    }
-    if (nb.size() < side) {
-        return std::nullopt;
-    }
-    std::size_t found = 0;
-    for (std::size_t j = i + 1; j < gone.size() && found < side; ++j) {
-        if (!gone[j]) {
-            nb.push_back(j);
-            ++found;
-        }
-    }
-    if (found < side) {
-        return std::nullopt;
     }
     return nb;
 }
 
-// Offset of p[i] across the quadratic (in chainage t) through its neighbours,
-// divided by sqrt(1 + h), h the prediction's leverage: a node far from
-// clustered neighbours is predicted by extrapolating their noise, and its
-// offset counts for that much less (a studentised residual, in metres of
-// node scatter).
-double residual(const std::vector<Point2>& p, const std::vector<double>& t, const std::vector<bool>& gone,
-                std::size_t i) {
-    const auto nb = neighbours(gone, i);
-    if (!nb) {
-        return 0.0;
-    }
-    // Least squares of x(u) and y(u), u = t - t_i, on 1, u, u^2 (4 points).
+// Offset of p[i] across the weighted least-squares quadratic (in chainage t)
+// through its neighbours, divided by sqrt(1 + h), h the prediction's
+// leverage: a node far from clustered neighbours is predicted by
+// extrapolating their noise, and its offset counts for that much less (a
+// studentised residual, in metres of node scatter).
+double offset_from(const std::vector<Point2>& p, const std::vector<double>& t, const std::vector<std::size_t>& nb,
+                   const std::vector<double>& w, std::size_t i) {
+    // Weighted sums for x(u) and y(u), u = t - t_i, on 1, u, u^2.
     double s[5] = {0, 0, 0, 0, 0}, bx[3] = {0, 0, 0}, by[3] = {0, 0, 0};
-    for (const std::size_t j : *nb) {
+    for (const std::size_t j : nb) {
         const double u = (t[j] - t[i]) / 100.0; // scaled: well conditioned
-        double up = 1.0;
+        double up = w[j];
         for (int k = 0; k < 5; ++k, up *= u) {
             s[k] += up;
             if (k < 3) {
@@ -65,7 +52,6 @@ double residual(const std::vector<Point2>& p, const std::vector<double>& t, cons
             }
         }
     }
-    // Solve the 3x3 normal equations [s0 s1 s2; s1 s2 s3; s2 s3 s4] c = b by Cramer's rule.
     const double m[3][3] = {{s[0], s[1], s[2]}, {s[1], s[2], s[3]}, {s[2], s[3], s[4]}};
     auto det3 = [](const double a[3][3]) {
         return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
@@ -73,7 +59,7 @@ double residual(const std::vector<Point2>& p, const std::vector<double>& t, cons
     };
     const double d = det3(m);
     if (std::abs(d) < 1e-12) {
-        return 0.0;
+        return 0.0; // too few weighted neighbours to predict it: no evidence either way
     }
     auto solve = [&](const double b[3], int col) {
         double a[3][3];
@@ -104,9 +90,33 @@ double turn(const std::vector<Point2>& p, std::size_t i) {
 // A node pulled aside makes the polyline turn one way at it and the other
 // way at both neighbours; a curve entered between sparse nodes turns one way
 // throughout, and is no outlier however badly a quadratic predicts it.
-bool spike(const std::vector<Point2>& p, std::size_t i) {
-    const double here = turn(p, i);
-    return here * turn(p, i - 1) < 0.0 && here * turn(p, i + 1) < 0.0;
+// Judged on the polyline through the nodes not marked: the kept neighbours
+// on each side of i, and theirs.
+bool spike_among_kept(const std::vector<Point2>& p, const std::vector<bool>& gone, std::size_t i) {
+    std::vector<Point2> q;
+    std::size_t before = 0;
+    for (std::size_t j = i; j > 0 && before < 2;) {
+        --j;
+        if (!gone[j]) {
+            q.insert(q.begin(), p[j]);
+            ++before;
+        }
+    }
+    q.push_back(p[i]);
+    std::size_t after = 0;
+    for (std::size_t j = i + 1; j < p.size() && after < 2; ++j) {
+        if (!gone[j]) {
+            q.push_back(p[j]);
+            ++after;
+        }
+    }
+    // Next to a chain end only the turns there are count.
+    if (before == 0 || after == 0 || q.size() < 4) {
+        return false;
+    }
+    const std::size_t at = before;
+    const double here = turn(q, at);
+    return (before < 2 || here * turn(q, at - 1) < 0.0) && (after < 2 || here * turn(q, at + 1) < 0.0);
 }
 
 double median(std::vector<double> v) {
@@ -116,6 +126,12 @@ double median(std::vector<double> v) {
     const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
     std::nth_element(v.begin(), mid, v.end());
     return *mid;
+}
+
+// Tukey's biweight: full weight within a few scales, none beyond `limit`.
+double biweight(double r, double limit) {
+    const double u = r / limit;
+    return u >= 1.0 ? 0.0 : (1.0 - u * u) * (1.0 - u * u);
 }
 
 } // namespace
@@ -131,55 +147,51 @@ OutlierScan find_outlier_nodes(const std::vector<Point2>& p) {
     for (std::size_t i = 1; i < n; ++i) {
         t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
     }
-    std::vector<double> r(n, 0.0);
-    std::vector<double> tested;
-    for (std::size_t i = 0; i < n; ++i) {
-        r[i] = residual(p, t, scan.outlier, i);
-        if (i >= side && i + side < n) {
-            tested.push_back(r[i]);
+    // The noise scale from the plain prediction (two neighbours each side).
+    std::vector<double> w(n, 1.0), tested;
+    for (std::size_t i = side; i + side < n; ++i) {
+        // Only where the neighbours are close: across sparse nodes a quadratic
+        // misses the curvature's own change (a transition) by more than the
+        // scatter, and the scale would measure the track, not the mapping.
+        if (t[i + side] - t[i - side] <= max_scale_span_m) {
+            tested.push_back(offset_from(p, t, *neighbours(n, i, side), w, i));
         }
     }
     scan.noise_sigma_m = 1.4826 * median(tested);
+    scan.tested = tested.size();
     const double limit = std::max(min_offset_m, scale_factor * scan.noise_sigma_m);
-    std::vector<bool> cleared(n, false); // tested and kept
+    // Robust prediction from three neighbours each side, re-weighted by each
+    // node's own residual (as in robust LOWESS): two outliers a node apart no
+    // longer spoil each other's prediction, nor their good neighbours'.
+    std::vector<double> r(n, 0.0);
+    for (int round = 0; round < robust_rounds; ++round) {
+        for (std::size_t i = 0; i < n; ++i) {
+            auto nb = neighbours(n, i, wide);
+            if (!nb) {
+                nb = neighbours(n, i, side);
+            }
+            r[i] = nb ? offset_from(p, t, *nb, w, i) : 0.0;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            w[i] = biweight(r[i], limit);
+        }
+    }
+    // Worst first; a spike is judged against the nodes still kept, so that
+    // of two outliers a node apart the second is a spike once the first is gone.
     while (true) {
         std::size_t worst = n;
-        for (std::size_t i = side + 1; i + side + 1 < n; ++i) {
-            const bool inner = t[i] > end_guard_m && t[n - 1] - t[i] > end_guard_m;
-            if (inner && !scan.outlier[i] && !cleared[i] && r[i] > limit && spike(p, i) &&
-                (worst == n || r[i] > r[worst])) {
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+            if (!scan.outlier[i] && r[i] > limit && (worst == n || r[i] > r[worst]) &&
+                spike_among_kept(p, scan.outlier, i)) {
                 worst = i;
             }
         }
         if (worst == n) {
-            return scan;
+            break;
         }
-        // Without it, its neighbours must line up: then it was a spike. Where
-        // they do not (a curve entered between sparse straight nodes, which a
-        // quadratic cannot follow), the point is kept.
         scan.outlier[worst] = true;
-        const std::size_t lo = worst >= 2 * side ? worst - 2 * side : 0;
-        const std::size_t hi = std::min(n, worst + 2 * side + 1);
-        std::vector<double> again(hi - lo, 0.0);
-        bool isolated = true;
-        for (std::size_t i = lo; i < hi; ++i) {
-            if (!scan.outlier[i]) {
-                again[i - lo] = residual(p, t, scan.outlier, i);
-                isolated = isolated && (again[i - lo] <= 0.5 * limit || scan.outlier[i]);
-            }
-        }
-        if (!isolated) {
-            scan.outlier[worst] = false;
-            cleared[worst] = true;
-            continue;
-        }
-        r[worst] = 0.0;
-        for (std::size_t i = lo; i < hi; ++i) {
-            if (!scan.outlier[i]) {
-                r[i] = again[i - lo]; // its neighbours were predicted through it
-            }
-        }
     }
+    return scan;
 }
 
 } // namespace railodd::geometry::fit

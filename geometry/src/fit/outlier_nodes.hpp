@@ -13,17 +13,19 @@ namespace railodd::geometry::fit {
 struct OutlierScan {
     std::vector<bool> outlier;  // per point
     double noise_sigma_m = 0.0; // robust scale of the nodes about their neighbours' line
+    std::size_t tested = 0;     // nodes the scale is taken over
 };
 
-// Each interior point is predicted from two kept neighbours on each side (a
-// quadratic in chainage through them, so curves are no outliers); its offset
-// across that line, studentised by the prediction's leverage, is its
-// residual. The scale is the MAD of the residuals; the worst point beyond
-// max(3 m, 5 scale) that is a spike (the polyline turns one way at it and the
-// other way at both neighbours) is marked if its neighbours then line up,
-// and they are predicted again, until none is. Points within 150 m of either end (and the
-// end points with the two next to them) are never marked: there the track
-// meets switches and other tracks.
+// Each node is predicted from its neighbours (a quadratic in chainage, so
+// curves are no outliers); its offset across that line, studentised by the
+// prediction's leverage, is its residual. The noise scale is the MAD of the
+// residuals from two neighbours each side. Outliers are then found by a
+// robust prediction from three each side, re-weighted by Tukey's biweight of
+// each node's own residual (three rounds, as robust LOWESS does), so that a
+// second outlier nearby spoils neither. The worst node beyond max(2.5 m,
+// 5 scales) that is a spike (the polyline through the kept nodes turns one
+// way at it and the other way at both neighbours) is marked, and so on. The
+// chain's two end nodes (switches, buffer stops) are never marked.
 OutlierScan find_outlier_nodes(const std::vector<Point2>& p);
 
 } // namespace railodd::geometry::fit

@@ -17,7 +17,9 @@ struct Point {
 };
 
 struct FitOptions {
-    double noise_sigma_m = 0.3;   // expected scatter of mapped nodes about the true centreline
+    // Scatter of the mapped nodes about the true centreline; 0: estimated per
+    // chain from the nodes themselves (FitQuality::noise_sigma_m).
+    double noise_sigma_m = 0.0;
     double knot_spacing_m = 12.0; // of the fine clothoid spline that estimates the curvature diagram
     double window_m = 2500.0;     // long tracks are fitted window by window, each starting where the last ended
     double curvature_sigma = 2e-5; // 1/m: noise scale of the estimated curvature diagram
@@ -32,7 +34,9 @@ struct FitQuality {
     double p95_m = 0.0;
     double max_m = 0.0;
     std::size_t windows = 0;
-    std::size_t fallback_windows = 0; // windows kept as the fine clothoid spline (no simpler fit was as good)
+    std::size_t fallback_windows = 0; // windows kept as the fine clothoid spline (no design came near the nodes)
+    std::size_t outliers = 0;         // mapped nodes left out of the fit as outliers
+    double noise_sigma_m = 0.0;       // node scatter the fit assumed: estimated, or FitOptions' override
 };
 
 struct FitResult {

@@ -65,6 +65,10 @@ struct FittedNetwork {
     // meet it as a constraint), or followed the nodes better with that end
     // free (docs/geometry.md).
     std::size_t spliced_ends = 0;
+    // Node scatter per chain (estimated from its nodes unless the options
+    // gave one; 0 for degenerate chains) and the nodes left out as outliers.
+    std::vector<double> chain_noise_sigma_m;
+    std::size_t outlier_nodes = 0;
 };
 
 // Pairs edge ends at every vertex into through routes (deflection below
