@@ -70,29 +70,28 @@ ordered_json track_entry(const GraphEdge& e, const FittedEdge& f, const IndexedA
     return entry;
 }
 
-double quantile(std::vector<double> v, double q) {
-    if (v.empty()) {
-        return 0.0;
-    }
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(std::floor(q * static_cast<double>(v.size() - 1)))];
+// The q quantile of ascending values (0 for none): the value at floor(q (n - 1)).
+double quantile(const std::vector<double>& sorted, double q) {
+    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(std::floor(q * static_cast<double>(sorted.size() - 1)))];
 }
 
 // The node scatter the fit assumed per chain and whether the node distances
 // agree with it (p95 within about 2 sigma where the fit reads the design).
-ordered_json noise_entry(const FittedNetwork& net, const Totals& t) {
+ordered_json noise_entry(const FittedNetwork& net, std::vector<double> d_over_noise) {
     std::vector<double> s;
     for (const double x : net.chain_noise_sigma_m) {
         if (x > 0.0) {
             s.push_back(x);
         }
     }
+    std::sort(s.begin(), s.end());
+    std::sort(d_over_noise.begin(), d_over_noise.end());
     return {{"chain_sigma_p50_m", round_to(quantile(s, 0.5), 1e-4)},
             {"chain_sigma_p95_m", round_to(quantile(s, 0.95), 1e-4)},
             {"chain_sigma_max_m", round_to(quantile(s, 1.0), 1e-4)},
             {"outlier_nodes", net.outlier_nodes},
-            {"node_distance_p95_sigmas", round_to(quantile(t.d_over_noise, 0.95), 1e-3)},
-            {"node_distance_max_sigmas", round_to(quantile(t.d_over_noise, 1.0), 1e-3)}};
+            {"node_distance_p95_sigmas", round_to(quantile(d_over_noise, 0.95), 1e-3)},
+            {"node_distance_max_sigmas", round_to(quantile(d_over_noise, 1.0), 1e-3)}};
 }
 
 ordered_json links_entry(const FittedNetwork& net) {
@@ -124,9 +123,6 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
         tracks.push_back(track_entry(graph.edges[f.edge], f, prebuilt ? &(*indexed)[i] : nullptr, t));
     }
     std::sort(t.d.begin(), t.d.end());
-    auto pct = [&](double q) {
-        return t.d.empty() ? 0.0 : t.d[static_cast<std::size_t>(std::floor(q * static_cast<double>(t.d.size() - 1)))];
-    };
     std::size_t switches = 0, crossings = 0;
     for (const auto& v : graph.vertices) {
         switches += v.kind == VertexKind::switch_ ? 1 : 0;
@@ -138,12 +134,12 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
                             {"crossing_vertices", crossings},
                             {"length_km", round_to(t.length / 1000.0, 1e-6)},
                             {"nodes", t.d.size()},
-                            {"node_distance_p50_m", round_to(pct(0.5), 1e-4)},
-                            {"node_distance_p95_m", round_to(pct(0.95), 1e-4)},
-                            {"node_distance_max_m", round_to(t.d.empty() ? 0.0 : t.d.back(), 1e-4)},
+                            {"node_distance_p50_m", round_to(quantile(t.d, 0.5), 1e-4)},
+                            {"node_distance_p95_m", round_to(quantile(t.d, 0.95), 1e-4)},
+                            {"node_distance_max_m", round_to(quantile(t.d, 1.0), 1e-4)},
                             {"links", links_entry(net)}};
     if (!net.chain_noise_sigma_m.empty()) {
-        summary["node_noise"] = noise_entry(net, t);
+        summary["node_noise"] = noise_entry(net, std::move(t.d_over_noise));
     }
     return {{"summary", summary}, {"tracks", tracks}};
 }

@@ -122,7 +122,7 @@ std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::ve
         if (r.gave_up || !r.end_met || r.max_m > max_allowed || loops_back(m.to_alignment(), window_points)) {
             continue; // too few parameters to reach the tied end, too far off, or a loop
         }
-        const double score = crit.score(point_distances(m, p), ps) +
+        const double score = crit.score(r.distances_m, ps) +
                              2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(m.to_alignment()));
         if (score < best_score) {
             best_score = score;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 
@@ -263,8 +264,7 @@ double window_cut(const Alignment& a, double preferred) {
 // straight held by two or three sparse nodes). Each is the largest distance
 // of its neighbourhood and more than max(2 m, 5 sigma); the window's first
 // and last nodes (switches, chain ends, the previous window's pose) stay.
-std::vector<std::size_t> far_nodes(const CurvatureModel& m, const std::vector<Point2>& p, double sigma) {
-    const std::vector<double> d = fit::point_distances(m, p);
+std::vector<std::size_t> far_nodes(const std::vector<double>& d, double sigma) {
     const double limit = std::max(2.0, 5.0 * sigma);
     std::vector<std::size_t> out;
     for (std::size_t i = 1; i + 1 < d.size(); ++i) {
@@ -280,30 +280,22 @@ std::vector<std::size_t> far_nodes(const CurvatureModel& m, const std::vector<Po
 WindowFit fit_window_robust(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o,
                             std::vector<bool>& kept) {
     kept.assign(p.size(), true);
-    std::vector<Point2> q = p;
-    std::vector<std::size_t> index(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        index[i] = i;
-    }
-    WindowFit w = fit_window(q, ends, o);
+    std::vector<std::size_t> index(p.size()); // of p, for each point fitted
+    std::iota(index.begin(), index.end(), std::size_t{0});
+    WindowFit w = fit_window(p, ends, o);
     for (int round = 0; round < 3; ++round) {
-        const std::vector<std::size_t> far = far_nodes(w.model, q, o.noise_sigma_m);
+        const std::vector<std::size_t> far = far_nodes(w.report.distances_m, o.noise_sigma_m);
         if (far.empty()) {
             break;
         }
-        std::vector<Point2> q2;
-        std::vector<std::size_t> index2;
-        for (std::size_t i = 0, f = 0; i < q.size(); ++i) {
-            if (f < far.size() && far[f] == i) {
-                kept[index[i]] = false;
-                ++f;
-                continue;
-            }
-            q2.push_back(q[i]);
-            index2.push_back(index[i]);
+        for (auto f = far.rbegin(); f != far.rend(); ++f) {
+            kept[index[*f]] = false;
+            index.erase(index.begin() + static_cast<std::ptrdiff_t>(*f));
         }
-        q = std::move(q2);
-        index = std::move(index2);
+        std::vector<Point2> q;
+        for (const std::size_t i : index) {
+            q.push_back(p[i]);
+        }
         w = fit_window(q, ends, o);
     }
     return w;
@@ -348,16 +340,13 @@ FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& poi
 namespace {
 
 // The chain's node scatter as the outlier scan measured it (the MAD of each
-// node's offset from its neighbours' local quadratic), within what mapped
-// the design can be told from: track lies within centimetres of its design
-// (and OSM stores 1e-7 degrees, about a centimetre), and
-// where too few nodes give a scale the value for traced OSM tracks is used.
+// node's offset from its neighbours' local quadratic), no finer than the
+// design can be told from: track lies within centimetres of its design, and
+// OSM stores 1e-7 degrees (about a centimetre). Where too few nodes lie close
+// enough together to give a scale, the value for traced OSM track is used.
 double estimated_noise(const fit::OutlierScan& scan) {
     constexpr double floor_m = 0.05, ceiling_m = 5.0, untested_m = 0.1;
-    if (!(scan.noise_sigma_m > 0.0) || scan.tested < 12) {
-        return scan.tested < 12 ? untested_m : floor_m;
-    }
-    return std::clamp(scan.noise_sigma_m, floor_m, ceiling_m);
+    return scan.tested < 12 ? untested_m : std::clamp(scan.noise_sigma_m, floor_m, ceiling_m);
 }
 
 std::vector<Point2> without_repeats(const std::vector<Point>& in) {
@@ -368,6 +357,77 @@ std::vector<Point2> without_repeats(const std::vector<Point>& in) {
         }
     }
     return out;
+}
+
+// Headings are never wrapped along an alignment: the end target must be the
+// turn of the mapped line away from the start, not that plus 2 pi.
+std::optional<Pose> end_target(const std::vector<Point2>& p, const std::vector<double>& t,
+                               const std::optional<Pose>& start, std::optional<Pose> end, double sigma) {
+    if (end) {
+        const ChordHeading h(p, std::max(5.0, 15.0 * sigma));
+        const double start_hdg = start ? start->hdg : h.at(0.0);
+        const double expected = start_hdg + (h.at(t.back()) - h.at(0.0));
+        end->hdg += 2 * std::numbers::pi * std::round((expected - end->hdg) / (2 * std::numbers::pi));
+    }
+    return end;
+}
+
+// Index of the last node of the window starting at i0 (chainages t): a
+// window's length, or the rest where that is at most one and a half.
+std::size_t window_end(const std::vector<double>& t, std::size_t i0, double window_m) {
+    if (t.back() - t[i0] <= 1.5 * window_m) {
+        return t.size() - 1;
+    }
+    std::size_t i1 = i0 + 1;
+    while (i1 + 1 < t.size() && t[i1 + 1] - t[i0] <= window_m) {
+        ++i1;
+    }
+    return i1;
+}
+
+// Fits p window by window into result (alignment, window counts); returns the
+// nodes (of p) some window's fit left out as far off.
+std::set<std::size_t> fit_windows(const std::vector<Point2>& p, std::optional<Pose> window_start,
+                                  const std::optional<Pose>& end, const FitOptions& o, FitResult& result) {
+    const std::vector<double> t = chainage(p);
+    std::set<std::size_t> far;
+    for (std::size_t i0 = 0;;) {
+        const std::size_t i1 = window_end(t, i0, o.window_m);
+        const bool last = i1 + 1 == p.size();
+        const std::vector<Point2> wp(p.begin() + static_cast<long>(i0), p.begin() + static_cast<long>(i1) + 1);
+        std::vector<bool> kept;
+        const WindowFit w = fit_window_robust(wp, {window_start, last ? end : std::nullopt}, o, kept);
+        for (std::size_t j = 0; j < kept.size(); ++j) {
+            if (!kept[j]) {
+                far.insert(i0 + j);
+            }
+        }
+        ++result.quality.windows;
+        result.quality.fallback_windows += w.fallback ? 1 : 0;
+        const Alignment a = w.model.to_alignment();
+        if (result.alignment.primitives.empty()) {
+            result.alignment.start = a.start;
+        }
+        auto& out = result.alignment.primitives;
+        if (last) {
+            out.insert(out.end(), a.primitives.begin(), a.primitives.end());
+            return far;
+        }
+        // Keep the first ~60 % of the window; the next window starts exactly
+        // where it ends, on a straight where there is one (a window starting
+        // inside a curve is tied to the curvature this one read there).
+        // The cut is at a node's foot: the next window's first node marks its start.
+        const IndexedAlignment ia(a, 2.0);
+        const double cut = window_cut(a, 0.6 * o.window_m);
+        std::size_t k = i0 + 1;
+        while (k + 1 < i1 && ia.project(p[k + 1].x, p[k + 1].y).s <= cut) {
+            ++k;
+        }
+        const std::vector<Alignment> parts = split_alignment(a, {ia.project(p[k].x, p[k].y).s});
+        out.insert(out.end(), parts.front().primitives.begin(), parts.front().primitives.end());
+        window_start = parts.back().start;
+        i0 = k;
+    }
 }
 
 } // namespace
@@ -391,65 +451,9 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
             p.push_back(mapped[i]);
         }
     }
-    const std::vector<double> t = chainage(p);
     FitResult result;
-    std::optional<Pose> window_start = start;
-    std::optional<Pose> end_pose = end;
-    if (end_pose) {
-        // Headings are never wrapped along an alignment: the end target must be
-        // the turn of the mapped line away from the start, not that plus 2 pi.
-        const ChordHeading h(p, std::max(5.0, 15.0 * o.noise_sigma_m));
-        const double start_hdg = start ? start->hdg : h.at(0.0);
-        const double expected = start_hdg + (h.at(t.back()) - h.at(0.0));
-        end_pose->hdg += 2 * std::numbers::pi * std::round((expected - end_pose->hdg) / (2 * std::numbers::pi));
-    }
-    std::set<std::size_t> far_ones; // of p: nodes a window's fit left out
-    std::size_t i0 = 0;
-    while (true) {
-        std::size_t i1 = i0 + 1;
-        const bool last = t.back() - t[i0] <= 1.5 * o.window_m;
-        if (last) {
-            i1 = p.size() - 1;
-        } else {
-            while (i1 + 1 < p.size() && t[i1 + 1] - t[i0] <= o.window_m) {
-                ++i1;
-            }
-        }
-        const std::vector<Point2> wp(p.begin() + static_cast<long>(i0), p.begin() + static_cast<long>(i1) + 1);
-        std::vector<bool> kept;
-        WindowFit w = fit_window_robust(wp, {window_start, last ? end_pose : std::nullopt}, o, kept);
-        for (std::size_t j = 0; j < kept.size(); ++j) {
-            if (!kept[j]) {
-                far_ones.insert(i0 + j);
-            }
-        }
-        ++result.quality.windows;
-        result.quality.fallback_windows += w.fallback ? 1 : 0;
-        Alignment a = w.model.to_alignment();
-        if (result.alignment.primitives.empty()) {
-            result.alignment.start = a.start;
-        }
-        if (last) {
-            result.alignment.primitives.insert(result.alignment.primitives.end(), a.primitives.begin(), a.primitives.end());
-            break;
-        }
-        // Keep the first ~60 % of the window; the next window starts exactly
-        // where it ends, on a straight where there is one (a window starting
-        // inside a curve is tied to the curvature this one read there).
-        // The cut is at a node's foot: the next window's first node marks its start.
-        const IndexedAlignment ia(a, 2.0);
-        const double cut = window_cut(a, 0.6 * o.window_m);
-        std::size_t k = i0 + 1;
-        while (k + 1 < i1 && ia.project(p[k + 1].x, p[k + 1].y).s <= cut) {
-            ++k;
-        }
-        const double split = ia.project(p[k].x, p[k].y).s;
-        const std::vector<Alignment> parts = split_alignment(a, {split});
-        const auto& head = parts.front().primitives;
-        result.alignment.primitives.insert(result.alignment.primitives.end(), head.begin(), head.end());
-        window_start = parts.back().start;
-        i0 = k;
-    }
+    const std::set<std::size_t> far =
+        fit_windows(p, start, end_target(p, chainage(p), start, end, o.noise_sigma_m), o, result);
     std::vector<Point> all;
     all.reserve(mapped.size());
     for (const auto& q : mapped) {
@@ -461,7 +465,8 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     result.quality.p95_m = q.p95_m;
     result.quality.max_m = q.max_m;
     result.quality.noise_sigma_m = o.noise_sigma_m;
-    result.quality.outliers = far_ones.size() + static_cast<std::size_t>(std::count(outliers.outlier.begin(), outliers.outlier.end(), true));
+    result.quality.outliers =
+        far.size() + static_cast<std::size_t>(std::count(outliers.outlier.begin(), outliers.outlier.end(), true));
     return result;
 }
 

@@ -315,13 +315,13 @@ SolveReport solve(CurvatureModel& model, const std::vector<Point2>& points, cons
     if (options.end) {
         report.end_met = end_gap(model, model.knot_poses().back(), *options.end).cwiseAbs().maxCoeff() < end_tolerance;
     }
-    const std::vector<double> d = point_distances(model, points);
+    report.distances_m = point_distances(model, points);
     double sum = 0.0;
-    for (double x : d) {
+    for (double x : report.distances_m) {
         sum += x * x;
         report.max_m = std::max(report.max_m, x);
     }
-    report.rms_m = d.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(d.size()));
+    report.rms_m = report.distances_m.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(report.distances_m.size()));
     return report;
 }
 

@@ -45,6 +45,7 @@ struct SolveReport {
     int iterations = 0;
     bool gave_up = false; // stopped early: the fit could not reach give_up_rss
     bool end_met = true;  // the end pose, if any, is met within end_tolerance (end_constraint.hpp)
+    std::vector<double> distances_m; // of every point to the fitted curve (empty where it gave up)
 };
 
 // Distances of every point to the model's curve (after the last update).
