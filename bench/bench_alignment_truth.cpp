@@ -1,7 +1,8 @@
 // The alignment fit against ground truth (data/alignment_truth): seeded
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
-// (defaults: 300 routes, sigma 0.1 0.3 1.0). Prints, per sigma, the
+// [--outliers F] [--worst N] (defaults: 300 routes, sigma 0.1 0.3 1.0,
+// 1 % outliers; --worst lists the N worst routes and arcs). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
 // design arc, elements against the design and spurious curvature sign
 // changes: the figures issue 18's targets are stated in.
@@ -28,8 +29,26 @@ double quantile(std::vector<double> v, double q) {
     return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
 }
 
-void run_sigma(int routes, double sigma, double outliers) {
+struct Worst {
+    double value = 0.0;
+    std::string what;
+};
+
+// The `count` largest of `items`, printed one per line under `title`.
+void print_worst(const char* title, std::vector<Worst> items, int count) {
+    if (count <= 0) {
+        return;
+    }
+    std::stable_sort(items.begin(), items.end(), [](const Worst& a, const Worst& b) { return a.value > b.value; });
+    std::printf("  %s:\n", title);
+    for (int i = 0; i < count && i < static_cast<int>(items.size()); ++i) {
+        std::printf("    %s\n", items[static_cast<std::size_t>(i)].what.c_str());
+    }
+}
+
+void run_sigma(int routes, double sigma, double outliers, int worst) {
     std::vector<double> p50, p95, dmax, radius, ratio, noise;
+    std::vector<Worst> worst_routes, worst_arcs;
     long spurious = 0, routes_spurious = 0, over_1m = 0;
     double km = 0.0, seconds = 0.0;
     for (int i = 0; i < routes; ++i) {
@@ -48,6 +67,17 @@ void run_sigma(int routes, double sigma, double outliers) {
         dmax.push_back(s.deviation_max_m);
         over_1m += s.deviation_max_m > 1.0 ? 1 : 0;
         radius.insert(radius.end(), s.radius_errors.begin(), s.radius_errors.end());
+        char line[256];
+        std::snprintf(line, sizeof line, "seed %d: max %.2f m, p95 %.2f m, %zu / %zu elements, noise %.2f m", 1000 + i,
+                      s.deviation_max_m, s.deviation_p95_m, s.fit_elements, s.design_elements,
+                      fit.quality.noise_sigma_m);
+        worst_routes.push_back({s.deviation_max_m, line});
+        for (std::size_t a = 0; a < r.arcs.size() && a < s.radius_errors.size(); ++a) {
+            std::snprintf(line, sizeof line, "seed %d arc at s %.0f: R %.0f m, %.0f m long, error %.1f %%", 1000 + i,
+                          r.arcs[a].s0, 1.0 / r.arcs[a].curvature, r.arcs[a].s1 - r.arcs[a].s0,
+                          100 * s.radius_errors[a]);
+            worst_arcs.push_back({s.radius_errors[a], line});
+        }
         ratio.push_back(static_cast<double>(s.fit_elements) / static_cast<double>(s.design_elements));
         spurious += std::max(0L, s.spurious_sign_changes);
         routes_spurious += s.spurious_sign_changes > 0 ? 1 : 0;
@@ -70,6 +100,8 @@ void run_sigma(int routes, double sigma, double outliers) {
                 quantile(noise, 0.5), quantile(noise, 0.95));
     std::printf("  elements / design: median %.2f, p95 %.2f, max %.2f; spurious sign changes: %ld on %ld routes\n",
                 quantile(ratio, 0.5), quantile(ratio, 0.95), quantile(ratio, 1.0), spurious, routes_spurious);
+    print_worst("routes of largest max deviation", worst_routes, worst);
+    print_worst("arcs of largest radius error", worst_arcs, worst);
 }
 
 } // namespace
@@ -78,9 +110,12 @@ int main(int argc, char** argv) {
     const int routes = argc > 1 ? std::max(1, std::atoi(argv[1])) : 300;
     std::vector<double> sigmas;
     double outliers = 0.01;
+    int worst = 0;
     for (int i = 2; i < argc; ++i) {
         if (std::string{argv[i]} == "--outliers" && i + 1 < argc) {
             outliers = std::atof(argv[++i]);
+        } else if (std::string{argv[i]} == "--worst" && i + 1 < argc) {
+            worst = std::atoi(argv[++i]);
         } else {
             sigmas.push_back(std::atof(argv[i]));
         }
@@ -89,7 +124,7 @@ int main(int argc, char** argv) {
         sigmas = {0.1, 0.3, 1.0};
     }
     for (const double s : sigmas) {
-        run_sigma(routes, s, outliers);
+        run_sigma(routes, s, outliers, worst);
     }
     return 0;
 }

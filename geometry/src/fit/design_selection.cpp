@@ -1,6 +1,7 @@
 #include "design_selection.hpp"
 
 #include "railodd/geometry/fit_alignment.hpp"
+#include "curvature_trend.hpp"
 #include "segmentation.hpp"
 
 #include <algorithm>
@@ -21,6 +22,11 @@ std::size_t free_parameters(const CurvatureModel& m) { return ParameterMap(m).si
 // handful of parameters of a reverse-curve wiggle through it.
 struct Criterion {
     static constexpr double cap = 25.0; // (5 sigma)^2: 3 sigma let real extracts' designs cut corners
+    // The design rules' prior on curves: each costs two parameters more
+    // than its elements' (a railway is straight unless the terrain forced a
+    // curve), so a handful of sparse nodes on a straight, scattered one way,
+    // do not buy a shallow curve through them.
+    static constexpr double per_curve = 2.0;
     double sigma = 0.1;
     std::size_t n = 0;
     double per_parameter() const { return std::log(static_cast<double>(std::max<std::size_t>(n, 3))); }
@@ -59,6 +65,19 @@ std::size_t kinked_transitions(const Alignment& a) {
     return n;
 }
 
+// Curves of an alignment: runs of elements between lines (a window that
+// starts or ends inside a curve counts it too).
+std::size_t curves(const Alignment& a) {
+    std::size_t n = 0;
+    bool in_curve = false;
+    for (const Primitive& p : a.primitives) {
+        const bool curved = p.kind != PrimitiveKind::line;
+        n += curved && !in_curve ? 1 : 0;
+        in_curve = curved;
+    }
+    return n;
+}
+
 // Candidate structures read off the curvature diagram at several noise
 // scales and penalties, simplest first, without repeats.
 std::vector<std::vector<Piece>> candidate_structures(const std::vector<double>& ks, const std::vector<double>& kk) {
@@ -82,25 +101,99 @@ std::vector<std::vector<Piece>> candidate_structures(const std::vector<double>& 
     return out;
 }
 
+// Solves again, from where the fit stands, with every node beyond the
+// criterion's cap (5 sigma) weighted down by (cap / distance)^2, while only a
+// few nodes are so far: iteratively reweighted least squares for the capped
+// likelihood, so that an outlier node no longer bends the design towards it.
+// (Many far nodes mean the structure is wrong, not the nodes.)
+SolveReport reweighted(CurvatureModel& m, const std::vector<Point2>& p, SolveOptions so, SolveReport r,
+                       const Criterion& crit) {
+    const double cap = std::sqrt(Criterion::cap) * crit.sigma;
+    const std::size_t most = 2 + p.size() / 50;
+    std::vector<std::size_t> previous;
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::size_t> far;
+        so.point_scale.assign(p.size(), 1.0);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (r.distances_m[i] > cap) {
+                so.point_scale[i] = cap / r.distances_m[i];
+                far.push_back(i);
+            }
+        }
+        if (far.empty() || far.size() > most || far == previous) {
+            break;
+        }
+        previous = far;
+        CurvatureModel trial = m;
+        SolveReport t = solve(trial, p, so);
+        if (t.gave_up || !t.end_met) {
+            break;
+        }
+        m = std::move(trial);
+        r = std::move(t);
+    }
+    return r;
+}
+
+// Is a candidate's fit near enough the nodes to be taken? Every node within
+// max_allowed, but for a few isolated far nodes (far_nodes: outliers the
+// window is then fitted again without).
+bool near_enough(const std::vector<double>& d, double max_allowed, double sigma) {
+    const std::vector<std::size_t> far = far_nodes(d, sigma);
+    if (far.size() > 1 + d.size() / 100) {
+        return false;
+    }
+    for (std::size_t i = 0, f = 0; i < d.size(); ++i) {
+        if (f < far.size() && far[f] == i) {
+            ++f;
+        } else if (d[i] > max_allowed) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
-// The design of least penalised-likelihood score among the candidates read
-// off the fine spline's curvature diagram (ks, kk); nothing where none is
-// near enough the nodes. The fine spline is no design. Candidates come
-// simplest first, so the loop stops once even a perfect fit (the fine
-// spline's residuals) could not beat the best.
-std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::vector<double>& ks,
-                                     const std::vector<double>& kk, const StructureEnds& se,
-                                     SolveOptions so, const SolveReport& fine_report, double sigma) {
-    const Criterion crit{sigma, p.size()};
-    const double rss_f = fine_report.rms_m * fine_report.rms_m * static_cast<double>(p.size());
+std::vector<std::size_t> far_nodes(const std::vector<double>& d, double sigma) {
+    const double limit = std::max(2.0, 5.0 * sigma);
+    std::vector<std::size_t> out;
+    for (std::size_t i = 2; i + 2 < d.size(); ++i) {
+        const bool single = d[i] > limit && d[i] > 1.5 * d[i - 1] && d[i] > 1.5 * d[i + 1];
+        // Two outliers side by side: neither is far beyond the other, both
+        // beyond the nodes around the pair.
+        const bool pair_first = i + 3 < d.size() && d[i] > limit && d[i + 1] > limit &&
+                                std::min(d[i], d[i + 1]) > 1.5 * std::max(d[i - 1], d[i + 2]);
+        if (single) {
+            out.push_back(i);
+        } else if (pair_first) {
+            out.push_back(i);
+            out.push_back(++i);
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// The candidate design of least penalised-likelihood score, read off the
+// curvature diagram (ks, kk) and fitted from the start pose se; nothing
+// where none is near enough the nodes. `floor`: the fit of the smooth line
+// the diagram came from (a fine spline, or the trend filter), whose
+// residuals bound what a design can reach. Candidates come simplest first,
+// so the loop stops once even the floor's residuals could not beat the best.
+std::optional<WindowFit> best_candidate(const std::vector<Point2>& p, const std::vector<double>& ks,
+                                        const std::vector<double>& kk, const StructureEnds& se, SolveOptions so,
+                                        double floor_rms, double floor_max, double sigma) {
+    const double rss_floor = floor_rms * floor_rms * static_cast<double>(p.size());
     // A design may leave a node half a metre (or three sigmas) further than
-    // the spline does, no more: the capped likelihood would not see a corner
-    // cut. Beyond 1.5 m only two sigmas: a chain straying 2 m from a node
-    // goes to the corner construction (chain_fit.cpp), a dozen elements per
-    // kilometre more.
+    // the smooth line does, no more: the capped likelihood would not see a
+    // corner cut. Beyond 1.5 m only two sigmas: a chain straying 2 m from a
+    // node goes to the corner construction (chain_fit.cpp), a dozen elements
+    // per kilometre more.
     const double max_allowed =
-        std::max(fine_report.max_m + 2.0 * sigma, std::min(fine_report.max_m + std::max(0.5, 3.0 * sigma), 1.5));
+        std::max(floor_max + 2.0 * sigma, std::min(floor_max + std::max(0.5, 3.0 * sigma), 1.5));
+    const Criterion crit{sigma, p.size()};
     std::vector<Point> window_points;
     for (const Point2& q : p) {
         window_points.push_back({q.x, q.y});
@@ -110,26 +203,66 @@ std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::ve
     for (auto& pieces : candidate_structures(ks, kk)) {
         CurvatureModel m = build_structure(std::move(pieces), se);
         const std::size_t ps = free_parameters(m);
-        if (best && crit.score(rss_f, ps) >= best_score) {
+        if (best && crit.score(rss_floor, ps) >= best_score) {
             break;
         }
         // The solve's residual sum is not capped: it may exceed the capped
         // one's bound by what a few far nodes add, hence the slack.
-        so.give_up_rss = std::isfinite(best_score)
-                             ? 2.0 * std::max(0.0, crit.rss_below(best_score, ps)) + rss_f
-                             : std::max(4.0 * rss_f, rss_f + 16.0 * sigma * sigma * static_cast<double>(p.size()));
-        const SolveReport r = solve(m, p, so);
-        if (r.gave_up || !r.end_met || r.max_m > max_allowed || loops_back(m.to_alignment(), window_points)) {
+        so.give_up_rss =
+            std::isfinite(best_score)
+                ? 2.0 * std::max(0.0, crit.rss_below(best_score, ps)) + rss_floor
+                : std::max(4.0 * rss_floor, rss_floor + 16.0 * sigma * sigma * static_cast<double>(p.size()));
+        SolveReport r = solve(m, p, so);
+        if (!r.gave_up && r.end_met) {
+            r = reweighted(m, p, so, std::move(r), crit);
+        }
+        if (r.gave_up || !r.end_met || !near_enough(r.distances_m, max_allowed, sigma) ||
+            loops_back(m.to_alignment(), window_points)) {
             continue; // too few parameters to reach the tied end, too far off, or a loop
         }
+        const Alignment a = m.to_alignment();
         const double score = crit.score(r.distances_m, ps) +
-                             2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(m.to_alignment()));
+                             2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(a)) +
+                             Criterion::per_curve * crit.per_parameter() * static_cast<double>(curves(a));
         if (score < best_score) {
             best_score = score;
             best = WindowFit{std::move(m), r, false};
         }
     }
     return best;
+}
+
+} // namespace
+
+std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::vector<double>& ks,
+                                     const std::vector<double>& kk, const StructureEnds& se,
+                                     SolveOptions so, const SolveReport& fine_report, double sigma) {
+    return best_candidate(p, ks, kk, se, std::move(so), fine_report.rms_m, fine_report.max_m, sigma);
+}
+
+std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, SolveOptions so,
+                                      double sigma) {
+    TrendEnds te;
+    if (se.start_fixed) {
+        te.start = se.start;
+    }
+    te.end_curvature = se.end_curvature;
+    const std::optional<CurvatureEstimate> e = estimate_curvature(p, te, sigma);
+    if (!e) {
+        return std::nullopt;
+    }
+    StructureEnds from = se;
+    if (!se.start_fixed) {
+        from.start = e->start;
+    }
+    const double rms = std::sqrt(e->rss_m2 / static_cast<double>(p.size()));
+    if (rms > 1.5 * sigma) {
+        // The filter could not follow the nodes (a turnout drawn as a kink
+        // beside a tied switch pose, short chains of a few nodes): its
+        // diagram would be no guide, nor its residuals a bound.
+        return std::nullopt;
+    }
+    return best_candidate(p, e->s, e->k, from, std::move(so), rms, e->max_m, sigma);
 }
 
 } // namespace railodd::geometry::fit

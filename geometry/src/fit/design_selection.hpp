@@ -18,6 +18,16 @@ struct WindowFit {
     bool fallback = false; // the fine spline kept: no design came near the nodes
 };
 
+// Nodes a fit passes far from while it stays close to their neighbours:
+// outliers (3-10 m off in a curve, where a quadratic through four nodes is no
+// good predictor, or on a straight held by two or three sparse nodes). Each
+// is more than max(2 m, 5 sigma) off and 1.5 times further than both
+// neighbours (or two such nodes side by side, 1.5 times further than the
+// nodes around the pair). The first and last nodes (switches, chain ends, the
+// previous window's pose) and their neighbours, which alone may hold a sparse
+// straight at an end, are never among them.
+std::vector<std::size_t> far_nodes(const std::vector<double>& d, double sigma);
+
 // ks, kk: the fine spline's knot chainages and curvatures; se: the window's
 // ends; so: the solve options for candidates; fine_report: the fine spline's
 // fit (its residuals bound what a design can reach); sigma: the node noise.
@@ -25,5 +35,13 @@ struct WindowFit {
 std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::vector<double>& ks,
                                      const std::vector<double>& kk, const StructureEnds& se, SolveOptions so,
                                      const SolveReport& fine_report, double sigma);
+
+// The same, with the curvature diagram read from the nodes themselves by
+// the trend filter (curvature_trend.hpp) instead of a fine spline: no
+// clothoid is evaluated before the candidates. se: the window's ends (its
+// start pose is used where the start is tied). Nothing where the window is
+// too small for the filter or no candidate comes near enough the nodes.
+std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, SolveOptions so,
+                                      double sigma);
 
 } // namespace railodd::geometry::fit

@@ -190,7 +190,17 @@ fit::SolveOptions solve_options(const WindowEnds& ends, const FitOptions& o) {
     return so;
 }
 
-WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
+fit::SolveOptions design_solve_options(const WindowEnds& ends, const FitOptions& o) {
+    fit::SolveOptions so = solve_options(ends, o);
+    so.geodesic_acceleration = true;
+    so.abandon_loops = true; // a candidate that loops is not chosen (best_candidate)
+    return so;
+}
+
+// The fine spline's way: its curvature diagram segmented into candidate
+// designs; the spline itself (or a denser one) where none comes near. Taken
+// only where the trend filter's designs do not (fit_window).
+WindowFit fit_window_by_spline(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
     CurvatureModel fine = fine_spline(p, ends, o);
     fit::SolveOptions so = solve_options(ends, o);
     so.kink_sigma = o.kink_sigma;
@@ -235,6 +245,23 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     return {std::move(fine), fine_report, true};
 }
 
+// The design read from the nodes by the trend filter where one comes near
+// them; else the fine spline's way.
+WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
+    fit::StructureEnds se;
+    if (ends.start) {
+        se.start = *ends.start;
+        se.start_fixed = true;
+    }
+    if (ends.end) {
+        se.end_curvature = ends.end->curvature;
+    }
+    if (auto best = fit::trend_design(p, se, design_solve_options(ends, o), o.noise_sigma_m)) {
+        return std::move(*best);
+    }
+    return fit_window_by_spline(p, ends, o);
+}
+
 // Where to cut a window's fit: at `preferred` if a straight is there, else
 // at the nearest point of a straight between 35 % and 80 % of the window (at
 // least 20 m into it), else at `preferred` all the same. A window starting
@@ -258,23 +285,6 @@ double window_cut(const Alignment& a, double preferred) {
     return std::min(cut, s);
 }
 
-// Nodes the chosen fit passes far from while it stays close to their
-// neighbours: outliers the scan before the fit could not see (3-10 m off in
-// a curve, where a quadratic through four nodes is no good predictor, or on a
-// straight held by two or three sparse nodes). Each is the largest distance
-// of its neighbourhood and more than max(2 m, 5 sigma); the window's first
-// and last nodes (switches, chain ends, the previous window's pose) stay.
-std::vector<std::size_t> far_nodes(const std::vector<double>& d, double sigma) {
-    const double limit = std::max(2.0, 5.0 * sigma);
-    std::vector<std::size_t> out;
-    for (std::size_t i = 1; i + 1 < d.size(); ++i) {
-        if (d[i] > limit && d[i] > 1.5 * d[i - 1] && d[i] > 1.5 * d[i + 1]) {
-            out.push_back(i);
-        }
-    }
-    return out;
-}
-
 // fit_window, again without far nodes until none is left (at most three
 // rounds). `kept` says which of p the fit used.
 WindowFit fit_window_robust(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o,
@@ -284,7 +294,7 @@ WindowFit fit_window_robust(const std::vector<Point2>& p, const WindowEnds& ends
     std::iota(index.begin(), index.end(), std::size_t{0});
     WindowFit w = fit_window(p, ends, o);
     for (int round = 0; round < 3; ++round) {
-        const std::vector<std::size_t> far = far_nodes(w.report.distances_m, o.noise_sigma_m);
+        const std::vector<std::size_t> far = fit::far_nodes(w.report.distances_m, o.noise_sigma_m);
         if (far.empty()) {
             break;
         }

@@ -37,6 +37,10 @@ struct SolveOptions {
     // curvature bound, where every evaluation costs a sub-interval per 0.3
     // rad of turn.
     bool abandon_loops = false;
+    // Per point, the factor its distance row is scaled by (empty: all one):
+    // a robust fit's reweighting (best_design), so that an outlier node no
+    // longer pulls the curve while the design is fitted.
+    std::vector<double> point_scale;
 };
 
 struct SolveReport {

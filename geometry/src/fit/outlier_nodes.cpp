@@ -89,10 +89,12 @@ double turn(const std::vector<Point2>& p, std::size_t i) {
 
 // A node pulled aside makes the polyline turn one way at it and the other
 // way at both neighbours; a curve entered between sparse nodes turns one way
-// throughout, and is no outlier however badly a quadratic predicts it.
-// Judged on the polyline through the nodes not marked: the kept neighbours
-// on each side of i, and theirs.
-bool spike_among_kept(const std::vector<Point2>& p, const std::vector<bool>& gone, std::size_t i) {
+// throughout, and is no outlier however badly a quadratic predicts it. Two
+// nodes pulled aside together (a bump) turn one way at both and the other
+// way at the nodes around them. Judged on the polyline through the nodes not
+// marked: the run (i and the `run - 1` kept nodes after it), two kept nodes
+// on each side of it.
+bool spike_among_kept(const std::vector<Point2>& p, const std::vector<bool>& gone, std::size_t i, std::size_t run) {
     std::vector<Point2> q;
     std::size_t before = 0;
     for (std::size_t j = i; j > 0 && before < 2;) {
@@ -102,21 +104,41 @@ bool spike_among_kept(const std::vector<Point2>& p, const std::vector<bool>& gon
             ++before;
         }
     }
-    q.push_back(p[i]);
-    std::size_t after = 0;
-    for (std::size_t j = i + 1; j < p.size() && after < 2; ++j) {
-        if (!gone[j]) {
-            q.push_back(p[j]);
+    std::size_t in_run = 0, after = 0;
+    for (std::size_t j = i; j < p.size() && after < 2; ++j) {
+        if (gone[j]) {
+            continue;
+        }
+        q.push_back(p[j]);
+        if (in_run < run) {
+            ++in_run;
+        } else {
             ++after;
         }
     }
-    // Next to a chain end only the turns there are count.
-    if (before == 0 || after == 0 || q.size() < 4) {
+    // Next to a chain end a curve's exit between sparse nodes turns the same
+    // way as an outlier there would: no call either way.
+    if (before < 2 || after < 2 || in_run < run) {
         return false;
     }
-    const std::size_t at = before;
-    const double here = turn(q, at);
-    return (before < 2 || here * turn(q, at - 1) < 0.0) && (after < 2 || here * turn(q, at + 1) < 0.0);
+    const std::size_t first = before, last = before + run - 1;
+    const double here = turn(q, first);
+    for (std::size_t k = first + 1; k <= last; ++k) {
+        if (here * turn(q, k) <= 0.0) {
+            return false;
+        }
+    }
+    return here * turn(q, first - 1) < 0.0 && here * turn(q, last + 1) < 0.0;
+}
+
+// The kept node after i, or n.
+std::size_t next_kept(const std::vector<bool>& gone, std::size_t i) {
+    for (std::size_t j = i + 1; j < gone.size(); ++j) {
+        if (!gone[j]) {
+            return j;
+        }
+    }
+    return gone.size();
 }
 
 double median(std::vector<double> v) {
@@ -178,18 +200,29 @@ OutlierScan find_outlier_nodes(const std::vector<Point2>& p) {
     }
     // Worst first; a spike is judged against the nodes still kept, so that
     // of two outliers a node apart the second is a spike once the first is gone.
+    // Two far nodes side by side go together where they make a bump.
     while (true) {
-        std::size_t worst = n;
+        std::size_t worst = n, partner = n;
         for (std::size_t i = 1; i + 1 < n; ++i) {
-            if (!scan.outlier[i] && r[i] > limit && (worst == n || r[i] > r[worst]) &&
-                spike_among_kept(p, scan.outlier, i)) {
+            if (scan.outlier[i] || r[i] <= limit || (worst < n && r[i] <= r[worst])) {
+                continue;
+            }
+            const std::size_t k = next_kept(scan.outlier, i);
+            if (spike_among_kept(p, scan.outlier, i, 1)) {
                 worst = i;
+                partner = n;
+            } else if (k + 1 < n && r[k] > limit && spike_among_kept(p, scan.outlier, i, 2)) {
+                worst = i;
+                partner = k;
             }
         }
         if (worst == n) {
             break;
         }
         scan.outlier[worst] = true;
+        if (partner < n) {
+            scan.outlier[partner] = true;
+        }
     }
     return scan;
 }

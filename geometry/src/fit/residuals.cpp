@@ -119,8 +119,10 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
 std::size_t fill_point_rows(const std::vector<Foot>& feet, const std::vector<Point2>& curve, const Problem& p,
                             Eigen::VectorXd& r, std::size_t from = 0) {
     const double w = 1.0 / p.opt.sigma_m;
+    const std::vector<double>& scale = p.opt.point_scale;
     for (std::size_t i = from; i < feet.size(); ++i) {
-        r[static_cast<long>(i)] = w * ((p.pts[i].x - curve[i].x) * feet[i].nx + (p.pts[i].y - curve[i].y) * feet[i].ny);
+        const double wi = scale.empty() ? w : w * scale[i];
+        r[static_cast<long>(i)] = wi * ((p.pts[i].x - curve[i].x) * feet[i].nx + (p.pts[i].y - curve[i].y) * feet[i].ny);
     }
     std::size_t row = feet.size();
     auto along = [&](std::size_t i) {
