@@ -1,11 +1,14 @@
 // The alignment fit against ground truth (data/alignment_truth): seeded
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
-// [--outliers F] [--worst N] (defaults: 300 routes, sigma 0.1 0.3 1.0,
-// 1 % outliers; --worst lists the N worst routes and arcs). Prints, per sigma, the
+// [--outliers F] [--worst N] [--bound] (defaults: 300 routes, sigma 0.1
+// 0.3 1.0, 1 % outliers; --worst lists the N worst routes and arcs; --bound
+// adds each arc's Cramer-Rao bound, design_crlb.hpp). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
 // design arc, elements against the design and spurious curvature sign
 // changes: the figures issue 18's targets are stated in.
+#include "design_crlb.hpp"
+
 #include "railodd/geometry/fit_alignment.hpp"
 #include "railodd/truth/alignment_truth.hpp"
 
@@ -46,8 +49,36 @@ void print_worst(const char* title, std::vector<Worst> items, int count) {
     }
 }
 
-void run_sigma(int routes, double sigma, double outliers, int worst) {
-    std::vector<double> p50, p95, dmax, radius, ratio, noise;
+struct Options {
+    int routes = 300;
+    std::vector<double> sigmas;
+    double outliers = 0.01;
+    int worst = 0;
+    bool bound = false;
+};
+
+// The arcs' Cramer-Rao bounds (relative sd of the curvature) against the
+// fit's radius errors: how many arcs no fit could bring within 2 or 3 %
+// (twice the bound beyond it), and the errors in units of the bound.
+void print_bounds(const std::vector<double>& bound, const std::vector<double>& radius) {
+    std::vector<double> ratio;
+    std::size_t over2 = 0, over3 = 0;
+    for (std::size_t i = 0; i < bound.size() && i < radius.size(); ++i) {
+        ratio.push_back(radius[i] / bound[i]);
+        over2 += 2 * bound[i] > 0.02 ? 1 : 0;
+        over3 += 2 * bound[i] > 0.03 ? 1 : 0;
+    }
+    const double n = static_cast<double>(std::max<std::size_t>(1, bound.size()));
+    std::printf("  curvature bound (relative sd): p50 %.2f %%, p95 %.2f %%; arcs whose 2-sd bound exceeds 2 %%: %.1f %%, "
+                "3 %%: %.1f %%; error / bound p50 %.2f, p95 %.2f\n",
+                100 * quantile(bound, 0.5), 100 * quantile(bound, 0.95), 100.0 * static_cast<double>(over2) / n,
+                100.0 * static_cast<double>(over3) / n, quantile(ratio, 0.5), quantile(ratio, 0.95));
+}
+
+void run_sigma(const Options& opt, double sigma) {
+    const int routes = opt.routes, worst = opt.worst;
+    const double outliers = opt.outliers;
+    std::vector<double> p50, p95, dmax, radius, ratio, noise, bound, radius_bounded;
     std::vector<Worst> worst_routes, worst_arcs;
     long spurious = 0, routes_spurious = 0, over_1m = 0;
     double km = 0.0, seconds = 0.0;
@@ -67,6 +98,13 @@ void run_sigma(int routes, double sigma, double outliers, int worst) {
         dmax.push_back(s.deviation_max_m);
         over_1m += s.deviation_max_m > 1.0 ? 1 : 0;
         radius.insert(radius.end(), s.radius_errors.begin(), s.radius_errors.end());
+        if (opt.bound) {
+            const std::vector<double> b = bench::arc_curvature_bounds(r, sigma);
+            if (b.size() == s.radius_errors.size()) {
+                bound.insert(bound.end(), b.begin(), b.end());
+                radius_bounded.insert(radius_bounded.end(), s.radius_errors.begin(), s.radius_errors.end());
+            }
+        }
         char line[256];
         std::snprintf(line, sizeof line, "seed %d: max %.2f m, p95 %.2f m, %zu / %zu elements, noise %.2f m", 1000 + i,
                       s.deviation_max_m, s.deviation_p95_m, s.fit_elements, s.design_elements,
@@ -100,6 +138,9 @@ void run_sigma(int routes, double sigma, double outliers, int worst) {
                 quantile(noise, 0.5), quantile(noise, 0.95));
     std::printf("  elements / design: median %.2f, p95 %.2f, max %.2f; spurious sign changes: %ld on %ld routes\n",
                 quantile(ratio, 0.5), quantile(ratio, 0.95), quantile(ratio, 1.0), spurious, routes_spurious);
+    if (opt.bound) {
+        print_bounds(bound, radius_bounded);
+    }
     print_worst("routes of largest max deviation", worst_routes, worst);
     print_worst("arcs of largest radius error", worst_arcs, worst);
 }
@@ -107,24 +148,25 @@ void run_sigma(int routes, double sigma, double outliers, int worst) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const int routes = argc > 1 ? std::max(1, std::atoi(argv[1])) : 300;
-    std::vector<double> sigmas;
-    double outliers = 0.01;
-    int worst = 0;
+    Options o;
+    o.routes = argc > 1 ? std::max(1, std::atoi(argv[1])) : 300;
     for (int i = 2; i < argc; ++i) {
-        if (std::string{argv[i]} == "--outliers" && i + 1 < argc) {
-            outliers = std::atof(argv[++i]);
-        } else if (std::string{argv[i]} == "--worst" && i + 1 < argc) {
-            worst = std::atoi(argv[++i]);
+        const std::string a = argv[i];
+        if (a == "--outliers" && i + 1 < argc) {
+            o.outliers = std::atof(argv[++i]);
+        } else if (a == "--worst" && i + 1 < argc) {
+            o.worst = std::atoi(argv[++i]);
+        } else if (a == "--bound") {
+            o.bound = true;
         } else {
-            sigmas.push_back(std::atof(argv[i]));
+            o.sigmas.push_back(std::atof(argv[i]));
         }
     }
-    if (sigmas.empty()) {
-        sigmas = {0.1, 0.3, 1.0};
+    if (o.sigmas.empty()) {
+        o.sigmas = {0.1, 0.3, 1.0};
     }
-    for (const double s : sigmas) {
-        run_sigma(routes, s, outliers, worst);
+    for (const double s : o.sigmas) {
+        run_sigma(o, s);
     }
     return 0;
 }

@@ -1,5 +1,7 @@
 #include "railodd/geometry/dump.hpp"
 
+#include "railodd/geometry/design_summary.hpp"
+
 #include "railodd/util/json_text.hpp"
 
 #include <algorithm>
@@ -111,6 +113,30 @@ ordered_json links_entry(const FittedNetwork& net) {
             {"max_curvature_jump", curv}};
 }
 
+// How much the network reads like a railway design (design_summary.hpp),
+// on the tracks' indexes where they are built already.
+ordered_json design_entry(const FittedNetwork& net, const std::vector<IndexedAlignment>* indexed) {
+    DesignSummary d;
+    if (indexed) {
+        d = summarise_design(*indexed);
+    } else {
+        std::vector<Alignment> alignments;
+        alignments.reserve(net.edges.size());
+        for (const FittedEdge& f : net.edges) {
+            alignments.push_back(f.alignment);
+        }
+        d = summarise_design(alignments);
+    }
+    return {{"spiral_share", round_to(d.spiral_share, 1e-4)},
+            {"arc_share", round_to(d.arc_share, 1e-4)},
+            {"elements_per_km", round_to(d.elements_per_km, 1e-3)},
+            {"sign_changes_per_km", round_to(d.sign_changes_per_km, 1e-3)},
+            {"parallel_pairs", d.parallel_pairs},
+            {"parallel_curvature_difference_p50", round_to(d.parallel_difference_p50, 1e-4)},
+            {"parallel_curvature_difference_p95", round_to(d.parallel_difference_p95, 1e-4)},
+            {"parallel_share_over_10pct", round_to(d.parallel_share_over_10pct, 1e-4)}};
+}
+
 } // namespace
 
 ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
@@ -137,7 +163,8 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
                             {"node_distance_p50_m", round_to(quantile(t.d, 0.5), 1e-4)},
                             {"node_distance_p95_m", round_to(quantile(t.d, 0.95), 1e-4)},
                             {"node_distance_max_m", round_to(quantile(t.d, 1.0), 1e-4)},
-                            {"links", links_entry(net)}};
+                            {"links", links_entry(net)},
+                            {"design", design_entry(net, prebuilt ? indexed : nullptr)}};
     if (!net.chain_noise_sigma_m.empty()) {
         summary["node_noise"] = noise_entry(net, std::move(t.d_over_noise));
     }

@@ -205,12 +205,12 @@ private:
             const double dref = r_.curv[k - 1] - 2 * r_.curv[k] + r_.curv[k + 1];
             const std::array<std::size_t, 5> c{k - 2, k - 1, k, k + 1, k + 2};
             const std::array<double, 5> v{1 / h2, -4 / h2, 6 / h2, -4 / h2, 1 / h2};
-            a.add(c, v, lambda * weights[k], -dref, y);
+            a.add(c, v, lambda * weights[k] * loosen(k), -dref, y);
         }
         for (std::size_t k = 1; k < cells_; ++k) {
             const std::array<std::size_t, 3> c{k - 1, k, k + 1};
             const std::array<double, 3> v{1 / h2, -2 / h2, 1 / h2};
-            a.add(c, v, straight_lambda * h * weights[n + k], -r_.curv[k], y);
+            a.add(c, v, straight_lambda * h * weights[n + k] * loosen(k), -r_.curv[k], y);
         }
         const double tie = 1e4 * wd;
         if (ends_.start) {
@@ -227,6 +227,17 @@ private:
         }
         a.add_diagonal(1e-9 * wd);
         return a.solve(y);
+    }
+
+    // A branch tied to its switch must leave along the through track and
+    // bend away at turnout radius within a few tens of metres; mappers often
+    // draw it leaving at an angle. Near a switch the penalties are a
+    // hundredth, so that the line can turn there. (A window's start tied to
+    // the previous window lies on a straight: no loosening there.)
+    double loosen(std::size_t k) const {
+        constexpr double near_m = 40.0;
+        const double s = r_.h * static_cast<double>(k), rest = r_.h * static_cast<double>(cells_ - k);
+        return (ends_.start_at_switch && s < near_m) || (ends_.end_curvature && rest < near_m) ? 0.01 : 1.0;
     }
 
     Filtered read(const std::vector<double>& y) const {

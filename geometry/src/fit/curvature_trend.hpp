@@ -15,7 +15,8 @@ namespace railodd::geometry::fit {
 
 struct TrendEnds {
     std::optional<Pose> start;           // tied start pose (x, y, hdg, curvature)
-    std::optional<double> end_curvature; // tied end curvature
+    std::optional<double> end_curvature; // tied end curvature (always a switch: the chain's end)
+    bool start_at_switch = false;        // the tied start is a switch, not the previous window's end
 };
 
 // The filtered line: its start pose, its curvature diagram (chainage s,

@@ -240,11 +240,12 @@ std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::ve
     return best_candidate(p, ks, kk, se, std::move(so), fine_report.rms_m, fine_report.max_m, sigma);
 }
 
-std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, SolveOptions so,
-                                      double sigma) {
+std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, bool start_at_switch,
+                                      SolveOptions so, double sigma) {
     TrendEnds te;
     if (se.start_fixed) {
         te.start = se.start;
+        te.start_at_switch = start_at_switch;
     }
     te.end_curvature = se.end_curvature;
     const std::optional<CurvatureEstimate> e = estimate_curvature(p, te, sigma);

@@ -39,9 +39,10 @@ std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::ve
 // The same, with the curvature diagram read from the nodes themselves by
 // the trend filter (curvature_trend.hpp) instead of a fine spline: no
 // clothoid is evaluated before the candidates. se: the window's ends (its
-// start pose is used where the start is tied). Nothing where the window is
+// start pose is used where the start is tied); start_at_switch: the tied
+// start is a switch (not the previous window's end). Nothing where the window is
 // too small for the filter or no candidate comes near enough the nodes.
-std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, SolveOptions so,
-                                      double sigma);
+std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, bool start_at_switch,
+                                      SolveOptions so, double sigma);
 
 } // namespace railodd::geometry::fit

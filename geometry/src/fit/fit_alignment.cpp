@@ -88,6 +88,7 @@ private:
 struct WindowEnds {
     std::optional<Pose> start;
     std::optional<Pose> end;
+    bool start_at_switch = false; // start is the chain's tie, not the previous window's end
 };
 
 // Knot chainages of the fine spline: about every knot_spacing where nodes are
@@ -256,7 +257,7 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     if (ends.end) {
         se.end_curvature = ends.end->curvature;
     }
-    if (auto best = fit::trend_design(p, se, design_solve_options(ends, o), o.noise_sigma_m)) {
+    if (auto best = fit::trend_design(p, se, ends.start_at_switch, design_solve_options(ends, o), o.noise_sigma_m)) {
         return std::move(*best);
     }
     return fit_window_by_spline(p, ends, o);
@@ -406,7 +407,8 @@ std::set<std::size_t> fit_windows(const std::vector<Point2>& p, std::optional<Po
         const bool last = i1 + 1 == p.size();
         const std::vector<Point2> wp(p.begin() + static_cast<long>(i0), p.begin() + static_cast<long>(i1) + 1);
         std::vector<bool> kept;
-        const WindowFit w = fit_window_robust(wp, {window_start, last ? end : std::nullopt}, o, kept);
+        const WindowFit w =
+            fit_window_robust(wp, {window_start, last ? end : std::nullopt, i0 == 0 && window_start}, o, kept);
         for (std::size_t j = 0; j < kept.size(); ++j) {
             if (!kept[j]) {
                 far.insert(i0 + j);

@@ -1,0 +1,178 @@
+#include "railodd/geometry/design_summary.hpp"
+
+#include "railodd/geometry/indexed_alignment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <optional>
+#include <unordered_map>
+
+namespace railodd::geometry {
+
+namespace {
+
+constexpr double straight = 1.0 / 20000.0; // curvature below which a track is straight
+constexpr double curved = 1.0 / 5000.0;    // curvature from which parallel curves are compared
+
+std::size_t sign_changes(const IndexedAlignment& a) {
+    std::size_t n = 0;
+    int last = 0;
+    for (double s = 0.0; s <= a.length(); s += 5.0) {
+        const double k = a.evaluate(s).curvature;
+        const int sign = k > straight ? 1 : (k < -straight ? -1 : 0);
+        if (sign != 0) {
+            n += last != 0 && sign != last ? 1 : 0;
+            last = sign;
+        }
+    }
+    return n;
+}
+
+struct Sample {
+    std::size_t track = 0;
+    double s = 0.0;
+    Pose pose;
+};
+
+// Samples every `step` metres in a hash of 10 m cells.
+class SampleGrid {
+public:
+    static constexpr double cell = 10.0;
+    void add(const Sample& q) { cells_[key(q.pose.x, q.pose.y)].push_back(q); }
+    template <typename F>
+    void near(double x, double y, F&& f) const {
+        const auto cx = static_cast<std::int64_t>(std::floor(x / cell)), cy = static_cast<std::int64_t>(std::floor(y / cell));
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            for (std::int64_t dy = -1; dy <= 1; ++dy) {
+                const auto it = cells_.find(pack(cx + dx, cy + dy));
+                if (it != cells_.end()) {
+                    for (const Sample& q : it->second) {
+                        f(q);
+                    }
+                }
+            }
+        }
+    }
+
+private:
+    static std::int64_t pack(std::int64_t cx, std::int64_t cy) { return cx * 4294967311LL + cy; }
+    static std::int64_t key(double x, double y) {
+        return pack(static_cast<std::int64_t>(std::floor(x / cell)), static_cast<std::int64_t>(std::floor(y / cell)));
+    }
+    std::unordered_map<std::int64_t, std::vector<Sample>> cells_;
+};
+
+// The relative curvature difference at a curved sample and its parallel
+// neighbour: the nearest other track whose foot lies 3-6 m beside it, within
+// 0.05 rad of its direction (either way). The track's own continuation
+// (another edge) is at its foot and is passed over.
+std::optional<double> parallel_difference(const Sample& q, const SampleGrid& grid,
+                                          const std::vector<IndexedAlignment>& tracks) {
+    std::vector<std::pair<double, const Sample*>> near;
+    grid.near(q.pose.x, q.pose.y, [&](const Sample& c) {
+        const double d = std::hypot(c.pose.x - q.pose.x, c.pose.y - q.pose.y);
+        if (c.track != q.track && d < 12.0) {
+            near.emplace_back(d, &c);
+        }
+    });
+    std::sort(near.begin(), near.end(), [](const auto& a, const auto& b) {
+        return a.first < b.first || (a.first == b.first && a.second->track < b.second->track);
+    });
+    for (std::size_t i = 0; i < near.size(); ++i) {
+        const std::size_t other = near[i].second->track;
+        if (std::any_of(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(i),
+                        [&](const auto& e) { return e.second->track == other; })) {
+            continue;
+        }
+        const double at = near[i].second->s;
+        const Projection f = tracks[other].project_within(q.pose.x, q.pose.y, at - 20.0, at + 20.0);
+        if (f.distance < 3.0 || f.distance > 6.0 || f.s <= 0.0 || f.s >= tracks[other].length()) {
+            continue;
+        }
+        const Pose n = tracks[other].evaluate(f.s);
+        const double turn = std::remainder(n.hdg - q.pose.hdg, 2 * std::numbers::pi);
+        const bool opposite = std::abs(turn) > 0.5 * std::numbers::pi;
+        if (std::abs(std::remainder(turn, std::numbers::pi)) > 0.05) {
+            continue;
+        }
+        // The neighbour's curvature and this point's offset from it (left
+        // positive), both in this track's direction; concentric with the
+        // neighbour, this track's curvature is k / (1 - k d).
+        const double k = opposite ? -n.curvature : n.curvature;
+        const double d = opposite ? -f.offset : f.offset;
+        const double expected = k / (1.0 - k * d);
+        return std::abs(q.pose.curvature - expected) / std::max(std::abs(q.pose.curvature), std::abs(expected));
+    }
+    return std::nullopt;
+}
+
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) {
+        return 0.0;
+    }
+    std::sort(v.begin(), v.end());
+    return v[static_cast<std::size_t>(std::floor(q * static_cast<double>(v.size() - 1)))];
+}
+
+} // namespace
+
+DesignSummary summarise_design(const std::vector<Alignment>& alignments) {
+    std::vector<IndexedAlignment> tracks;
+    tracks.reserve(alignments.size());
+    for (const Alignment& a : alignments) {
+        tracks.emplace_back(a, 2.0);
+    }
+    return summarise_design(tracks);
+}
+
+DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks) {
+    DesignSummary out;
+    double length_m = 0.0, spiral_m = 0.0, arc_m = 0.0;
+    std::size_t elements = 0, changes = 0;
+    for (const IndexedAlignment& t : tracks) {
+        for (const Primitive& p : t.alignment().primitives) {
+            length_m += p.length;
+            spiral_m += p.kind == PrimitiveKind::spiral ? p.length : 0.0;
+            arc_m += p.kind == PrimitiveKind::arc ? p.length : 0.0;
+        }
+        elements += t.alignment().primitives.size();
+        changes += sign_changes(t);
+    }
+    if (length_m <= 0.0) {
+        return out;
+    }
+    out.length_km = length_m / 1000.0;
+    out.spiral_share = spiral_m / length_m;
+    out.arc_share = arc_m / length_m;
+    out.elements_per_km = static_cast<double>(elements) / out.length_km;
+    out.sign_changes_per_km = static_cast<double>(changes) / out.length_km;
+    SampleGrid grid;
+    std::vector<Sample> curved_samples;
+    for (std::size_t t = 0; t < tracks.size(); ++t) {
+        for (double s = 0.0; s <= tracks[t].length(); s += 10.0) {
+            const Sample q{t, s, tracks[t].evaluate(s)};
+            grid.add(q);
+            if (std::abs(q.pose.curvature) > curved) {
+                curved_samples.push_back(q);
+            }
+        }
+    }
+    std::vector<double> diff;
+    for (const Sample& q : curved_samples) {
+        if (const auto d = parallel_difference(q, grid, tracks)) {
+            diff.push_back(*d);
+        }
+    }
+    out.parallel_pairs = diff.size();
+    out.parallel_difference_p50 = quantile(diff, 0.5);
+    out.parallel_difference_p95 = quantile(diff, 0.95);
+    out.parallel_share_over_10pct =
+        diff.empty() ? 0.0
+                     : static_cast<double>(std::count_if(diff.begin(), diff.end(), [](double x) { return x > 0.1; })) /
+                           static_cast<double>(diff.size());
+    return out;
+}
+
+} // namespace railodd::geometry
