@@ -16,20 +16,6 @@ namespace {
 constexpr double straight = 1.0 / 20000.0; // curvature below which a track is straight
 constexpr double curved = 1.0 / 5000.0;    // curvature from which parallel curves are compared
 
-std::size_t sign_changes(const IndexedAlignment& a) {
-    std::size_t n = 0;
-    int last = 0;
-    for (double s = 0.0; s <= a.length(); s += 5.0) {
-        const double k = a.evaluate(s).curvature;
-        const int sign = k > straight ? 1 : (k < -straight ? -1 : 0);
-        if (sign != 0) {
-            n += last != 0 && sign != last ? 1 : 0;
-            last = sign;
-        }
-    }
-    return n;
-}
-
 struct Sample {
     std::size_t track = 0;
     double s = 0.0;
@@ -118,6 +104,20 @@ double quantile(std::vector<double> v, double q) {
 
 } // namespace
 
+std::size_t curvature_sign_changes(const IndexedAlignment& a) {
+    std::size_t n = 0;
+    int last = 0;
+    for (double s = 0.0; s <= a.length(); s += 5.0) {
+        const double k = a.evaluate(s).curvature;
+        const int sign = k > straight ? 1 : (k < -straight ? -1 : 0);
+        if (sign != 0) {
+            n += last != 0 && sign != last ? 1 : 0;
+            last = sign;
+        }
+    }
+    return n;
+}
+
 DesignSummary summarise_design(const std::vector<Alignment>& alignments) {
     std::vector<IndexedAlignment> tracks;
     tracks.reserve(alignments.size());
@@ -138,7 +138,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks) {
             arc_m += p.kind == PrimitiveKind::arc ? p.length : 0.0;
         }
         elements += t.alignment().primitives.size();
-        changes += sign_changes(t);
+        changes += curvature_sign_changes(t);
     }
     if (length_m <= 0.0) {
         return out;

@@ -1,5 +1,6 @@
 #include "railodd/truth/alignment_truth.hpp"
 
+#include "railodd/geometry/design_summary.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 #include "rng.hpp"
 
@@ -156,21 +157,7 @@ TruthRoute make_route(std::uint64_t seed, const TruthOptions& options) {
     return r;
 }
 
-std::size_t sign_changes(const Alignment& a) {
-    const geometry::IndexedAlignment ia(a);
-    constexpr double straight = 1.0 / 20000.0;
-    int last = 0;
-    std::size_t n = 0;
-    for (double s = 0.0; s <= ia.length(); s += 5.0) {
-        const double k = ia.evaluate(s).curvature;
-        const int sign = k > straight ? 1 : k < -straight ? -1 : 0;
-        if (sign != 0) {
-            n += last != 0 && sign != last ? 1 : 0;
-            last = sign;
-        }
-    }
-    return n;
-}
+std::size_t sign_changes(const Alignment& a) { return geometry::curvature_sign_changes(geometry::IndexedAlignment(a)); }
 
 TruthScore score(const TruthRoute& route, const Alignment& fit) {
     TruthScore sc;

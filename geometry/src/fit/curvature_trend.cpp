@@ -1,6 +1,7 @@
 #include "curvature_trend.hpp"
 
 #include "band_matrix.hpp"
+#include "chord_heading.hpp"
 
 #include <algorithm>
 #include <array>
@@ -24,48 +25,6 @@ struct Reference {
     double h = 4.0;
     std::vector<double> x, y, hdg, curv; // per grid point
 };
-
-std::vector<double> polyline_chainage(const std::vector<Point2>& p) {
-    std::vector<double> t(p.size(), 0.0);
-    for (std::size_t i = 1; i < p.size(); ++i) {
-        t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
-    }
-    return t;
-}
-
-// Headings of chords at least min_chord long, at their middles, unwrapped,
-// evaluated at the grid (linear between chord middles).
-std::vector<double> chord_headings(const std::vector<Point2>& p, double min_chord, const std::vector<double>& g) {
-    const std::vector<double> t = polyline_chainage(p);
-    std::vector<double> mid, hdg;
-    for (std::size_t from = 0, i = 1; i < p.size(); ++i) {
-        const double len = std::hypot(p[i].x - p[from].x, p[i].y - p[from].y);
-        if ((len < min_chord && i + 1 < p.size()) || len < 1e-6) {
-            continue;
-        }
-        double a = std::atan2(p[i].y - p[from].y, p[i].x - p[from].x);
-        if (!hdg.empty()) {
-            a = hdg.back() + wrap(a - hdg.back());
-        }
-        mid.push_back(0.5 * (t[i] + t[from]));
-        hdg.push_back(a);
-        from = i;
-    }
-    std::vector<double> out;
-    for (const double s : g) {
-        const auto it = std::upper_bound(mid.begin(), mid.end(), s);
-        if (it == mid.begin()) {
-            out.push_back(hdg.front());
-        } else if (it == mid.end()) {
-            out.push_back(hdg.back());
-        } else {
-            const std::size_t j = static_cast<std::size_t>(it - mid.begin());
-            const double f = (s - mid[j - 1]) / (mid[j] - mid[j - 1]);
-            out.push_back(hdg[j - 1] + f * (hdg[j] - hdg[j - 1]));
-        }
-    }
-    return out;
-}
 
 // Poses integrated along hdg (one per grid point, spacing h) from (x0, y0).
 Reference integrate(double x0, double y0, std::vector<double> hdg, double h) {
@@ -149,8 +108,9 @@ void interpolation_row(double s, double h, std::size_t cells, std::array<std::si
 
 // The filter on one reference: offsets y per grid point minimising
 // sum (e_i - y(s_i))^2 / sigma^2 + lambda sum |second difference of curvature|
-// (curvature = reference curvature + y''), by iteratively reweighted least
-// squares. Returns the grid curvature (empty where the system is singular).
+// + straight_lambda h sum |curvature| (curvature = reference curvature + y''),
+// by iteratively reweighted least squares; nothing where the band system is
+// not positive definite.
 struct Filtered {
     std::vector<double> y, curv, kink; // kink: second difference of curvature per grid point
 };
@@ -317,18 +277,19 @@ CurvatureEstimate estimate(const Reference& ref, const std::vector<Offset>& o, c
 std::optional<CurvatureEstimate> estimate_curvature(const std::vector<Point2>& p, const TrendEnds& ends,
                                                     double sigma) {
     constexpr double grid_m = 4.0, diagram_m = 12.0;
-    const double length = polyline_chainage(p).back();
+    const double length = chainage(p).back();
     if (p.size() < 5 || length < 40.0) {
         return std::nullopt;
     }
     const std::size_t cells = std::max<std::size_t>(12, static_cast<std::size_t>(std::lround(length / grid_m)));
     const double h = length / static_cast<double>(cells);
-    std::vector<double> g(cells + 1);
+    const ChordHeading chords(p, std::max(5.0, 15.0 * sigma));
+    std::vector<double> hdg(cells + 1);
     for (std::size_t k = 0; k <= cells; ++k) {
-        g[k] = h * static_cast<double>(k);
+        hdg[k] = chords.at(h * static_cast<double>(k));
     }
     const double x0 = ends.start ? ends.start->x : p.front().x, y0 = ends.start ? ends.start->y : p.front().y;
-    Reference ref = integrate(x0, y0, chord_headings(p, std::max(5.0, 15.0 * sigma), g), h);
+    Reference ref = integrate(x0, y0, std::move(hdg), h);
     // Kink weights first, then curvature weights; l2 to start with.
     std::vector<double> weights(cells + 1, 1.0 / 1e-6);
     weights.resize(2 * (cells + 1), 1.0 / 1e-4);

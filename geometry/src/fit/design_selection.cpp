@@ -216,11 +216,13 @@ std::optional<WindowFit> best_candidate(const std::vector<Point2>& p, const std:
         if (!r.gave_up && r.end_met) {
             r = reweighted(m, p, so, std::move(r), crit);
         }
-        if (r.gave_up || !r.end_met || !near_enough(r.distances_m, max_allowed, sigma) ||
-            loops_back(m.to_alignment(), window_points)) {
-            continue; // too few parameters to reach the tied end, too far off, or a loop
+        if (r.gave_up || !r.end_met || !near_enough(r.distances_m, max_allowed, sigma)) {
+            continue; // too few parameters to reach the tied end, or too far off
         }
         const Alignment a = m.to_alignment();
+        if (loops_back(a, window_points)) {
+            continue;
+        }
         const double score = crit.score(r.distances_m, ps) +
                              2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(a)) +
                              Criterion::per_curve * crit.per_parameter() * static_cast<double>(curves(a));

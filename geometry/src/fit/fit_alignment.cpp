@@ -4,6 +4,7 @@
 // (design_selection.cpp) gives the final alignment. See docs/geometry.md.
 #include "railodd/geometry/fit_alignment.hpp"
 
+#include "chord_heading.hpp"
 #include "curvature_model.hpp"
 #include "design_selection.hpp"
 #include "least_squares.hpp"
@@ -27,63 +28,8 @@ using fit::CurvatureModel;
 using fit::WindowFit;
 using fit::Point2;
 
-std::vector<double> chainage(const std::vector<Point2>& p) {
-    std::vector<double> t(p.size(), 0.0);
-    for (std::size_t i = 1; i < p.size(); ++i) {
-        t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
-    }
-    return t;
-}
-
-// Heading of the polyline as a function of chainage: chord directions,
-// unwrapped, at chord midpoints; linear in between. Chords shorter than
-// min_chord are skipped (their direction is mostly noise: 0.3 m of scatter on
-// a 2 m chord turns it by 0.2 rad).
-class ChordHeading {
-public:
-    ChordHeading(const std::vector<Point2>& p, double min_chord) {
-        const std::vector<double> t = chainage(p);
-        std::size_t from = 0;
-        for (std::size_t i = 1; i < p.size(); ++i) {
-            const double len = std::hypot(p[i].x - p[from].x, p[i].y - p[from].y);
-            if (len < min_chord && i + 1 < p.size()) {
-                continue;
-            }
-            if (len < 1e-6) {
-                continue;
-            }
-            double h = std::atan2(p[i].y - p[from].y, p[i].x - p[from].x);
-            if (!hdg_.empty()) {
-                h += 2 * std::numbers::pi * std::round((hdg_.back() - h) / (2 * std::numbers::pi));
-            }
-            mid_.push_back(0.5 * (t[i] + t[from]));
-            hdg_.push_back(h);
-            from = i;
-        }
-        if (hdg_.empty()) {
-            // Every chord too short to trust (or the points coincide with the
-            // first): the overall direction is the best guess there is.
-            mid_.push_back(0.5 * t.back());
-            hdg_.push_back(std::atan2(p.back().y - p.front().y, p.back().x - p.front().x));
-        }
-    }
-    double at(double s) const {
-        if (mid_.size() == 1 || s <= mid_.front()) {
-            return hdg_.front();
-        }
-        if (s >= mid_.back()) {
-            return hdg_.back();
-        }
-        const auto it = std::upper_bound(mid_.begin(), mid_.end(), s);
-        const std::size_t j = static_cast<std::size_t>(it - mid_.begin());
-        const double f = (s - mid_[j - 1]) / (mid_[j] - mid_[j - 1]);
-        return hdg_[j - 1] + f * (hdg_[j] - hdg_[j - 1]);
-    }
-    bool empty() const noexcept { return hdg_.empty(); }
-
-private:
-    std::vector<double> mid_, hdg_;
-};
+using fit::chainage;
+using fit::ChordHeading;
 
 struct WindowEnds {
     std::optional<Pose> start;
