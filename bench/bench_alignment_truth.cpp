@@ -1,8 +1,9 @@
 // The alignment fit against ground truth (data/alignment_truth): seeded
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
-// [--outliers F] [--worst N] [--bound] (defaults: 300 routes, sigma 0.1
-// 0.3 1.0, 1 % outliers; --worst lists the N worst routes and arcs; --bound
+// [--outliers F] [--worst N] [--bound] [--first SEED] (defaults: 300
+// routes from seed 1000, sigma 0.1 0.3 1.0, 1 % outliers; --worst lists the
+// N worst routes and arcs; --bound
 // adds each arc's Cramer-Rao bound, design_crlb.hpp). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
 // design arc, elements against the design and spurious curvature sign
@@ -55,6 +56,7 @@ struct Options {
     double outliers = 0.01;
     int worst = 0;
     bool bound = false;
+    int first = 1000; // seed of the first route
 };
 
 // The arcs' Cramer-Rao bounds (relative sd of the curvature) against the
@@ -86,7 +88,8 @@ void run_sigma(const Options& opt, double sigma) {
         truth::TruthOptions o;
         o.sigma_m = sigma;
         o.outlier_fraction = outliers;
-        const truth::TruthRoute r = truth::make_route(1000 + static_cast<std::uint64_t>(i), o);
+        const int seed = opt.first + i;
+        const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), o);
         const auto t0 = std::chrono::steady_clock::now();
         const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, {});
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -106,12 +109,13 @@ void run_sigma(const Options& opt, double sigma) {
             }
         }
         char line[256];
-        std::snprintf(line, sizeof line, "seed %d: max %.2f m, p95 %.2f m, %zu / %zu elements, noise %.2f m", 1000 + i,
-                      s.deviation_max_m, s.deviation_p95_m, s.fit_elements, s.design_elements,
+        std::snprintf(line, sizeof line, "seed %d: max %.2f m at s %.0f, p95 %.2f m, %zu / %zu elements, noise %.2f m",
+                      seed, s.deviation_max_m, s.deviation_max_at_m, s.deviation_p95_m, s.fit_elements,
+                      s.design_elements,
                       fit.quality.noise_sigma_m);
         worst_routes.push_back({s.deviation_max_m, line});
         for (std::size_t a = 0; a < r.arcs.size() && a < s.radius_errors.size(); ++a) {
-            std::snprintf(line, sizeof line, "seed %d arc at s %.0f: R %.0f m, %.0f m long, error %.1f %%", 1000 + i,
+            std::snprintf(line, sizeof line, "seed %d arc at s %.0f: R %.0f m, %.0f m long, error %.1f %%", seed,
                           r.arcs[a].s0, 1.0 / r.arcs[a].curvature, r.arcs[a].s1 - r.arcs[a].s0,
                           100 * s.radius_errors[a]);
             worst_arcs.push_back({s.radius_errors[a], line});
@@ -156,6 +160,8 @@ int main(int argc, char** argv) {
             o.outliers = std::atof(argv[++i]);
         } else if (a == "--worst" && i + 1 < argc) {
             o.worst = std::atoi(argv[++i]);
+        } else if (a == "--first" && i + 1 < argc) {
+            o.first = std::atoi(argv[++i]);
         } else if (a == "--bound") {
             o.bound = true;
         } else {

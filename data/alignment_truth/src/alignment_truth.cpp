@@ -170,7 +170,11 @@ TruthScore score(const TruthRoute& route, const Alignment& fit) {
     }
     sc.deviation_p50_m = quantile(dev, 0.5);
     sc.deviation_p95_m = quantile(dev, 0.95);
-    sc.deviation_max_m = dev.empty() ? 0.0 : *std::max_element(dev.begin(), dev.end());
+    if (!dev.empty()) {
+        const auto worst = std::max_element(dev.begin(), dev.end());
+        sc.deviation_max_m = *worst;
+        sc.deviation_max_at_m = 2.0 * static_cast<double>(worst - dev.begin());
+    }
     for (const auto& arc : route.arcs) {
         const geometry::Pose mid = truth.evaluate(0.5 * (arc.s0 + arc.s1));
         const double k = fitted.evaluate(fitted.project(mid.x, mid.y).s).curvature;

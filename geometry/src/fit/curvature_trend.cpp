@@ -268,7 +268,13 @@ CurvatureEstimate estimate(const Reference& ref, const std::vector<Offset>& o, c
         }
         e.rss_m2 += (q.e - y) * (q.e - y);
         e.max_m = std::max(e.max_m, std::abs(q.e - y));
+        e.frame.s.push_back(q.s);
+        e.frame.e.push_back(q.e);
     }
+    e.frame.h = h;
+    e.frame.x = ref.x;
+    e.frame.y = ref.y;
+    e.frame.hdg = ref.hdg;
     return e;
 }
 

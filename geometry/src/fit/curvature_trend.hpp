@@ -6,6 +6,7 @@
 // to the nodes' offsets from a reference line by iteratively reweighted
 // banded least squares: linear in the window's length, no clothoid
 // evaluated. The design structures are read off it by design_selection.
+#include "frame_fit.hpp"
 #include "least_squares.hpp"
 
 #include <optional>
@@ -26,6 +27,7 @@ struct CurvatureEstimate {
     std::vector<double> s, k;
     double rss_m2 = 0.0; // sum of squared offsets
     double max_m = 0.0;  // largest offset
+    Frame frame;         // the filter's final reference and the nodes on it, for fit_in_frame
 };
 
 // Nothing where the window has too few nodes for the filter (fewer than

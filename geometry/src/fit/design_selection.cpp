@@ -83,8 +83,17 @@ std::size_t curves(const Alignment& a) {
 std::vector<std::vector<Piece>> candidate_structures(const std::vector<double>& ks, const std::vector<double>& kk) {
     std::vector<std::vector<Piece>> out{template_structure(ks, kk)};
     const CurvatureDiagram diagram(ks, kk);
+    // A segmentation depends on penalty * sigma^2 only (its cost divided by
+    // 1 / sigma^2 is the residual sum plus that per parameter): of the 24
+    // pairs, those with a product already segmented are skipped.
+    std::vector<double> done;
     for (double sigma : {2e-4, 1.4e-4, 1e-4, 7e-5, 5e-5, 3.5e-5, 2.5e-5, 1.7e-5}) {
         for (double penalty : {32.0, 8.0, 2.0}) {
+            const double product = penalty * sigma * sigma;
+            if (std::any_of(done.begin(), done.end(), [&](double d) { return std::abs(d - product) < 1e-6 * d; })) {
+                continue;
+            }
+            done.push_back(product);
             auto pieces = diagram.segment({sigma, penalty});
             const bool seen = std::any_of(out.begin(), out.end(), [&](const auto& o) {
                 return o.size() == pieces.size() &&
@@ -176,62 +185,145 @@ std::vector<std::size_t> far_nodes(const std::vector<double>& d, double sigma) {
 
 namespace {
 
-// The candidate design of least penalised-likelihood score, read off the
-// curvature diagram (ks, kk) and fitted from the start pose se; nothing
-// where none is near enough the nodes. `floor`: the fit of the smooth line
-// the diagram came from (a fine spline, or the trend filter), whose
-// residuals bound what a design can reach. Candidates come simplest first,
-// so the loop stops once even the floor's residuals could not beat the best.
-std::optional<WindowFit> best_candidate(const std::vector<Point2>& p, const std::vector<double>& ks,
-                                        const std::vector<double>& kk, const StructureEnds& se, SolveOptions so,
-                                        double floor_rms, double floor_max, double sigma) {
-    const double rss_floor = floor_rms * floor_rms * static_cast<double>(p.size());
-    // A design may leave a node half a metre (or three sigmas) further than
-    // the smooth line does, no more: the capped likelihood would not see a
-    // corner cut. Beyond 1.5 m only two sigmas: a chain straying 2 m from a
-    // node goes to the corner construction (chain_fit.cpp), a dozen elements
-    // per kilometre more.
-    const double max_allowed =
-        std::max(floor_max + 2.0 * sigma, std::min(floor_max + std::max(0.5, 3.0 * sigma), 1.5));
-    const Criterion crit{sigma, p.size()};
+// What every candidate of a window is judged by.
+struct Selection {
+    const std::vector<Point2>& p;
     std::vector<Point> window_points;
-    for (const Point2& q : p) {
-        window_points.push_back({q.x, q.y});
-    }
-    std::optional<WindowFit> best;
-    double best_score = std::numeric_limits<double>::infinity();
-    for (auto& pieces : candidate_structures(ks, kk)) {
-        CurvatureModel m = build_structure(std::move(pieces), se);
-        const std::size_t ps = free_parameters(m);
-        if (best && crit.score(rss_floor, ps) >= best_score) {
-            break;
+    Criterion crit;
+    double rss_floor = 0.0;  // the smooth line's residual sum: no design does better
+    double max_allowed = 0.0; // no node may be further (but a few isolated far nodes)
+    SolveOptions so;
+
+    // The floor's fit: rms and largest distance of the smooth line the
+    // diagram came from (a fine spline, or the trend filter).
+    Selection(const std::vector<Point2>& points, double floor_rms, double floor_max, double sigma, SolveOptions o)
+        : p(points), crit{sigma, points.size()}, so(std::move(o)) {
+        rss_floor = floor_rms * floor_rms * static_cast<double>(p.size());
+        // A design may leave a node half a metre (or three sigmas) further
+        // than the smooth line does, no more: the capped likelihood would
+        // not see a corner cut. Beyond 1.5 m only two sigmas: a chain
+        // straying 2 m from a node goes to the corner construction
+        // (chain_fit.cpp), a dozen elements per kilometre more.
+        max_allowed = std::max(floor_max + 2.0 * sigma, std::min(floor_max + std::max(0.5, 3.0 * sigma), 1.5));
+        for (const Point2& q : p) {
+            window_points.push_back({q.x, q.y});
         }
+    }
+
+    double score(const std::vector<double>& d, const CurvatureModel& m) const {
+        const Alignment a = m.to_alignment();
+        return crit.score(d, free_parameters(m)) +
+               2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(a)) +
+               Criterion::per_curve * crit.per_parameter() * static_cast<double>(curves(a));
+    }
+
+    // The candidate fitted exactly from where it stands, with its score;
+    // nothing where it cannot beat best_score, misses the tied end, is too
+    // far from the nodes or loops.
+    std::optional<WindowFit> exact(CurvatureModel m, double best_score, double& score) {
+        const std::size_t ps = free_parameters(m);
         // The solve's residual sum is not capped: it may exceed the capped
         // one's bound by what a few far nodes add, hence the slack.
         so.give_up_rss =
             std::isfinite(best_score)
                 ? 2.0 * std::max(0.0, crit.rss_below(best_score, ps)) + rss_floor
-                : std::max(4.0 * rss_floor, rss_floor + 16.0 * sigma * sigma * static_cast<double>(p.size()));
+                : std::max(4.0 * rss_floor, rss_floor + 16.0 * crit.sigma * crit.sigma * static_cast<double>(p.size()));
         SolveReport r = solve(m, p, so);
         if (!r.gave_up && r.end_met) {
             r = reweighted(m, p, so, std::move(r), crit);
         }
-        if (r.gave_up || !r.end_met || !near_enough(r.distances_m, max_allowed, sigma)) {
-            continue; // too few parameters to reach the tied end, or too far off
+        if (r.gave_up || !r.end_met || !near_enough(r.distances_m, max_allowed, crit.sigma) ||
+            loops_back(m.to_alignment(), window_points)) {
+            return std::nullopt;
         }
-        const Alignment a = m.to_alignment();
-        if (loops_back(a, window_points)) {
-            continue;
+        score = this->score(r.distances_m, m);
+        return WindowFit{std::move(m), std::move(r), false};
+    }
+};
+
+// Every candidate solved exactly, simplest first; the loop stops once even
+// the floor's residuals could not beat the best.
+std::optional<WindowFit> best_exact(Selection& sel, std::vector<std::vector<Piece>> candidates,
+                                    const StructureEnds& se) {
+    std::optional<WindowFit> best;
+    double best_score = std::numeric_limits<double>::infinity();
+    for (auto& pieces : candidates) {
+        CurvatureModel m = build_structure(std::move(pieces), se);
+        if (best && sel.crit.score(sel.rss_floor, free_parameters(m)) >= best_score) {
+            break;
         }
-        const double score = crit.score(r.distances_m, ps) +
-                             2.0 * crit.per_parameter() * static_cast<double>(kinked_transitions(a)) +
-                             Criterion::per_curve * crit.per_parameter() * static_cast<double>(curves(a));
-        if (score < best_score) {
+        double score = 0.0;
+        if (auto f = sel.exact(std::move(m), best_score, score); f && score < best_score) {
             best_score = score;
-            best = WindowFit{std::move(m), r, false};
+            best = std::move(f);
         }
     }
     return best;
+}
+
+// Every candidate fitted in the trend filter's frame (frame_fit.hpp), a
+// pass over the nodes per evaluation, and ranked by its score there; then
+// solved exactly in that order, from the frame's fit, until one is taken
+// and the next ranks more than two parameters' worth worse (at most three
+// taken). Only where the frame's ranking is no guide (every candidate fails
+// exactly) are all solved.
+std::optional<WindowFit> best_screened(Selection& sel, std::vector<std::vector<Piece>> candidates,
+                                       const StructureEnds& se, const Frame& frame) {
+    struct Screened {
+        CurvatureModel m;
+        double score = 0.0;
+        bool near = false;
+    };
+    std::vector<Screened> screened;
+    auto fit = [&](Screened& c, bool move_knots) {
+        const FrameFit ff = fit_in_frame(c.m, frame, sel.so.end, sel.crit.sigma, move_knots);
+        c.score = ff.ok ? sel.score(ff.distances_m, c.m) : std::numeric_limits<double>::infinity();
+        c.near = ff.ok && near_enough(ff.distances_m, sel.max_allowed, sel.crit.sigma);
+    };
+    auto order = [](const Screened& a, const Screened& b) { return a.near != b.near ? a.near : a.score < b.score; };
+    for (auto& pieces : candidates) {
+        Screened c{build_structure(std::move(pieces), se)};
+        fit(c, true);
+        if (std::isfinite(c.score)) {
+            screened.push_back(std::move(c));
+        }
+    }
+    std::stable_sort(screened.begin(), screened.end(), order);
+    std::optional<WindowFit> best;
+    double best_score = std::numeric_limits<double>::infinity(), taken_at = 0.0;
+    int taken = 0;
+    for (Screened& c : screened) {
+        if (taken > 0 && (taken >= 3 || c.score > taken_at + 2.0 * sel.crit.per_parameter())) {
+            break;
+        }
+        double score = 0.0;
+        if (auto f = sel.exact(std::move(c.m), best_score, score)) {
+            taken_at = taken++ == 0 ? c.score : taken_at;
+            if (score < best_score) {
+                best_score = score;
+                best = std::move(f);
+            }
+        }
+    }
+    return best;
+}
+
+// The candidate design of least penalised-likelihood score, read off the
+// curvature diagram (ks, kk) and fitted from the start pose se; nothing
+// where none is near enough the nodes. `floor_rms`, `floor_max`: the fit of
+// the smooth line the diagram came from, whose residuals bound what a design
+// can reach. `frame`: the trend filter's, where the diagram is its.
+std::optional<WindowFit> best_candidate(const std::vector<Point2>& p, const std::vector<double>& ks,
+                                        const std::vector<double>& kk, const StructureEnds& se, SolveOptions so,
+                                        double floor_rms, double floor_max, double sigma,
+                                        const Frame* frame = nullptr) {
+    Selection sel(p, floor_rms, floor_max, sigma, std::move(so));
+    if (frame) {
+        if (auto best = best_screened(sel, candidate_structures(ks, kk), se, *frame)) {
+            return best;
+        }
+    }
+    return best_exact(sel, candidate_structures(ks, kk), se);
 }
 
 } // namespace
@@ -265,7 +357,7 @@ std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const Struct
         // diagram would be no guide, nor its residuals a bound.
         return std::nullopt;
     }
-    return best_candidate(p, e->s, e->k, from, std::move(so), rms, e->max_m, sigma);
+    return best_candidate(p, e->s, e->k, from, std::move(so), rms, e->max_m, sigma, &e->frame);
 }
 
 } // namespace railodd::geometry::fit

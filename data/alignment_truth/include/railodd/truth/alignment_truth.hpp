@@ -38,6 +38,7 @@ struct TruthScore {
     double deviation_p50_m = 0.0; // distance of the true centreline (every 2 m) to the fit
     double deviation_p95_m = 0.0;
     double deviation_max_m = 0.0;
+    double deviation_max_at_m = 0.0; // chainage of the true centreline where it is
     std::vector<double> radius_errors; // per design arc: |R_fit / R_true - 1| at the arc's middle
     std::size_t design_elements = 0;
     std::size_t fit_elements = 0;
