@@ -50,6 +50,8 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
                     "Scatter (m) of mapped track nodes about the true centreline, the fit's model selection scale; "
                     "default: estimated per chain from its nodes")
         ->check(finite_range(0.01, 5.0));
+    app->add_flag("--independent-tracks", opt_.independent_tracks,
+                  "Fit every track on its own nodes only: no parallel track's design offered (docs/geometry.md)");
     app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
         ->capture_default_str()
         ->check(finite_range(0.0, 10000.0));
@@ -222,15 +224,12 @@ std::string map_date(const std::string& option, const ingest::IngestResult& r) {
     return d;
 }
 
-Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files, double node_noise_m,
-                      unsigned threads, PhaseTimer& timer) {
+Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::string>& dem_files,
+                      const geometry::FitOptions& fo, PhaseTimer& timer) {
     Geometry g;
     timer.start("track_graph");
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
     timer.start("fit_tracks");
-    geometry::FitOptions fo;
-    fo.noise_sigma_m = node_noise_m;
-    fo.threads = threads;
     g.fitted_tracks = geometry::fit_track_graph(g.tracks, fo);
     timer.start("vertical_profiles");
     std::optional<geometry::ElevationModel> dem;
@@ -301,7 +300,11 @@ int ConvertCommand::run() {
     // Phase 2: track graph, railway-grade centrelines and profiles, road
     // centrelines; then crossings, and features placed on the tracks.
     PhaseTimer timer;
-    Geometry geo = fit_geometry(result, opt_.dem, opt_.node_noise_m, opt_.threads, timer);
+    geometry::FitOptions fo;
+    fo.noise_sigma_m = opt_.node_noise_m;
+    fo.threads = opt_.threads;
+    fo.parallel_guides = !opt_.independent_tracks;
+    Geometry geo = fit_geometry(result, opt_.dem, fo, timer);
     timer.start("cant");
     geometry::CantOptions cant;
     cant.estimate = opt_.estimate_cant;

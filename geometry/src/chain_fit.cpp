@@ -30,8 +30,8 @@ bool misses(const EndMiss& m) {
 
 // The fit with free ends, each tied end's stretch rebuilt by corners.
 ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& o) {
-    ChainFit f{fit_alignment(p, std::nullopt, std::nullopt, o).alignment, ChainMethod::spliced, 0};
+                     const FitOptions& o, const std::vector<IndexedAlignment>& guides) {
+    ChainFit f{fit_alignment(p, std::nullopt, std::nullopt, o, guides).alignment, ChainMethod::spliced, 0};
     if (start) {
         f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options);
         ++f.spliced_ends;
@@ -46,12 +46,12 @@ ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& sta
 } // namespace
 
 ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>& start,
-                          const std::optional<Pose>& end, const FitOptions& o) {
-    const FitResult r = fit_alignment(p, start, end, o);
+                          const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides) {
+    const FitResult r = fit_alignment(p, start, end, o, guides);
     double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.max_m;
     ChainFit best{r.alignment, ChainMethod::railway, 0, r.quality.noise_sigma_m, r.quality.outliers};
     if ((start || end) && worst > retry_deviation_m) {
-        ChainFit s = spliced_fit(p, start, end, o);
+        ChainFit s = spliced_fit(p, start, end, o, guides);
         s.noise_sigma_m = best.noise_sigma_m;
         s.outliers = best.outliers;
         const double m = loops_back(s.alignment, p) ? std::numeric_limits<double>::infinity() : measure_fit(s.alignment, p).max_m;

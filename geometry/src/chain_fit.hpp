@@ -25,7 +25,9 @@ struct ChainFit {
     std::size_t outliers = 0;   // nodes it left out as outliers
 };
 
+// guides: parallel tracks' fitted alignments (fit_alignment.hpp).
 ChainFit fit_chain_points(const std::vector<Point>& points, const std::optional<Pose>& start,
-                          const std::optional<Pose>& end, const FitOptions& options);
+                          const std::optional<Pose>& end, const FitOptions& options,
+                          const std::vector<IndexedAlignment>& guides = {});
 
 } // namespace railodd::geometry

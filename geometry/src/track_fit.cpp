@@ -3,6 +3,7 @@
 #include "railodd/geometry/indexed_alignment.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "chain_fit.hpp"
+#include "parallel_chains.hpp"
 #include "tie_splice.hpp"
 
 #include <algorithm>
@@ -77,6 +78,7 @@ public:
         chain_spliced_.assign(chains_.size(), 0);
         chain_noise_.assign(chains_.size(), 0.0);
         chain_outliers_.assign(chains_.size(), 0);
+        guide_.resize(chains_.size());
         geometry_.reserve(chains_.size());
         for (std::size_t c = 0; c < chains_.size(); ++c) {
             geometry_.push_back(chain_points(g_, chains_[c]));
@@ -104,6 +106,7 @@ public:
         for (std::size_t c : order) {
             plan_chain(c);
         }
+        plan_guides(order);
         execute();
         for (std::size_t c : completion_) {
             if (corner_chain_[c]) {
@@ -153,6 +156,50 @@ private:
         completion_.push_back(c);
     }
 
+    // Parallel tracks: each chain is offered the design of the longer chain
+    // it runs beside (parallel_chains.hpp), which it then waits for, unless
+    // that chain waits on it already.
+    void plan_guides(const std::vector<std::size_t>& order) {
+        if (!o_.parallel_guides) {
+            return;
+        }
+        std::vector<std::size_t> rank(chains_.size());
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            rank[order[i]] = i;
+        }
+        std::vector<std::vector<Point>> points;
+        for (const ChainGeometry& cg : geometry_) {
+            points.push_back(cg.points);
+        }
+        const std::vector<std::vector<std::size_t>> guides = parallel_guides(points, rank);
+        for (std::size_t c : order) {
+            for (const std::size_t g : guides[c]) {
+                if (!waits_on(g, c)) {
+                    guide_[c].push_back(g);
+                    depends_[c].push_back(g);
+                }
+            }
+        }
+    }
+
+    // Does chain a wait, through ties and guides, on chain b?
+    bool waits_on(std::size_t a, std::size_t b) const {
+        std::vector<std::size_t> stack{a};
+        std::vector<char> seen(chains_.size(), 0);
+        while (!stack.empty()) {
+            const std::size_t x = stack.back();
+            stack.pop_back();
+            if (x == b) {
+                return true;
+            }
+            if (!seen[x]) {
+                seen[x] = 1;
+                stack.insert(stack.end(), depends_[x].begin(), depends_[x].end());
+            }
+        }
+        return false;
+    }
+
     std::optional<Pose> tie_pose(std::size_t c, const ChainEnd& end, bool at_start) const {
         if (!end.tied) {
             return std::nullopt;
@@ -167,12 +214,6 @@ private:
         const std::size_t n = chains_.size();
         unsigned threads = o_.threads > 0 ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
         threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, n)));
-        if (threads <= 1) {
-            for (std::size_t c : completion_) {
-                fit_chain(c);
-            }
-            return;
-        }
         std::vector<std::size_t> rank(n), pending(n, 0);
         std::vector<std::vector<std::size_t>> dependents(n);
         for (std::size_t i = 0; i < completion_.size(); ++i) {
@@ -187,6 +228,19 @@ private:
             if (pending[c] == 0) {
                 ready.insert({rank[c], c});
             }
+        }
+        if (threads <= 1) {
+            while (!ready.empty()) {
+                const std::size_t c = ready.begin()->second;
+                ready.erase(ready.begin());
+                fit_chain(c);
+                for (std::size_t d : dependents[c]) {
+                    if (--pending[d] == 0) {
+                        ready.insert({rank[d], d});
+                    }
+                }
+            }
+            return;
         }
         std::mutex m;
         std::condition_variable cv;
@@ -305,7 +359,11 @@ private:
             a.primitives.push_back(make_line(0.0));
             chain_degenerate_[c] = 1;
         } else {
-            ChainFit fit = fit_chain_points(cg.points, start, end, o_);
+            std::vector<IndexedAlignment> guides;
+            for (const std::size_t g : guide_[c]) {
+                guides.emplace_back(fitted_[g].alignment, 2.0);
+            }
+            ChainFit fit = fit_chain_points(cg.points, start, end, o_, guides);
             corner_chain_[c] = fit.method == ChainMethod::corners ? 1 : 0;
             chain_spliced_[c] = fit.spliced_ends;
             chain_noise_[c] = fit.noise_sigma_m;
@@ -405,6 +463,7 @@ private:
     std::vector<std::size_t> chain_spliced_;
     std::vector<double> chain_noise_;
     std::vector<std::size_t> chain_outliers_;
+    std::vector<std::vector<std::size_t>> guide_; // the parallel chains each chain is guided by
     std::size_t untied_ = 0;
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;

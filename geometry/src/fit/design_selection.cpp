@@ -2,11 +2,13 @@
 
 #include "railodd/geometry/fit_alignment.hpp"
 #include "curvature_trend.hpp"
+#include "parallel_guide.hpp"
 #include "segmentation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace railodd::geometry::fit {
 
@@ -220,8 +222,11 @@ struct Selection {
     // The candidate fitted exactly from where it stands, with its score;
     // nothing where it cannot beat best_score, misses the tied end, is too
     // far from the nodes or loops.
-    std::optional<WindowFit> exact(CurvatureModel m, double best_score, double& score) {
-        const std::size_t ps = free_parameters(m);
+    // `guided`: the design is a parallel track's (parallel_guide.hpp): its
+    // lengths and curves were paid for there; only the start pose (where
+    // free) and the track's offset are new parameters.
+    std::optional<WindowFit> exact(CurvatureModel m, double best_score, double& score, bool guided = false) {
+        const std::size_t ps = guided ? (m.start_free ? 3 : 0) + 1 : free_parameters(m);
         // The solve's residual sum is not capped: it may exceed the capped
         // one's bound by what a few far nodes add, hence the slack.
         so.give_up_rss =
@@ -236,7 +241,7 @@ struct Selection {
             loops_back(m.to_alignment(), window_points)) {
             return std::nullopt;
         }
-        score = this->score(r.distances_m, m);
+        score = guided ? crit.score(r.distances_m, ps) : this->score(r.distances_m, m);
         return WindowFit{std::move(m), std::move(r), false};
     }
 };
@@ -244,9 +249,7 @@ struct Selection {
 // Every candidate solved exactly, simplest first; the loop stops once even
 // the floor's residuals could not beat the best.
 std::optional<WindowFit> best_exact(Selection& sel, std::vector<std::vector<Piece>> candidates,
-                                    const StructureEnds& se) {
-    std::optional<WindowFit> best;
-    double best_score = std::numeric_limits<double>::infinity();
+                                    const StructureEnds& se, std::optional<WindowFit> best, double best_score) {
     for (auto& pieces : candidates) {
         CurvatureModel m = build_structure(std::move(pieces), se);
         if (best && sel.crit.score(sel.rss_floor, free_parameters(m)) >= best_score) {
@@ -268,7 +271,8 @@ std::optional<WindowFit> best_exact(Selection& sel, std::vector<std::vector<Piec
 // taken). Only where the frame's ranking is no guide (every candidate fails
 // exactly) are all solved.
 std::optional<WindowFit> best_screened(Selection& sel, std::vector<std::vector<Piece>> candidates,
-                                       const StructureEnds& se, const Frame& frame) {
+                                       const StructureEnds& se, const Frame& frame, std::optional<WindowFit> best,
+                                       double best_score) {
     struct Screened {
         CurvatureModel m;
         double score = 0.0;
@@ -289,8 +293,7 @@ std::optional<WindowFit> best_screened(Selection& sel, std::vector<std::vector<P
         }
     }
     std::stable_sort(screened.begin(), screened.end(), order);
-    std::optional<WindowFit> best;
-    double best_score = std::numeric_limits<double>::infinity(), taken_at = 0.0;
+    double taken_at = 0.0;
     int taken = 0;
     for (Screened& c : screened) {
         if (taken > 0 && (taken >= 3 || c.score > taken_at + 2.0 * sel.crit.per_parameter())) {
@@ -308,34 +311,81 @@ std::optional<WindowFit> best_screened(Selection& sel, std::vector<std::vector<P
     return best;
 }
 
+// Curvature variables made fixed knots at their current values.
+void fix_curvatures(CurvatureModel& m) {
+    for (std::size_t k = 0; k < m.knot_var.size(); ++k) {
+        if (m.knot_var[k] >= 0) {
+            m.knot_fixed[k] = m.curv[static_cast<std::size_t>(m.knot_var[k])];
+            m.knot_var[k] = -1;
+        }
+    }
+    m.curv.clear();
+}
+
+// The guided candidate (parallel_guide.hpp): the neighbour's design, from
+// the window's tied start or the offset neighbour's pose (its heading
+// turned by whole turns to the nodes' own). In the filter's frame its
+// curvatures may move within a prior of 2e-5 1/m of the neighbour's (about
+// 2 % at R 1,000 m: room for the tied start's heading, not for a design of
+// its own), and are then fixed for the exact solve of lengths and start.
+// Without a frame they stay the neighbour's.
+std::optional<CurvatureModel> guided_model(const GuidedStructure& g, const StructureEnds& se,
+                                           const std::vector<Point2>& p, const Frame* frame, const SolveOptions& so,
+                                           double sigma) {
+    constexpr double guided_prior = 5e-6;
+    StructureEnds ends = se;
+    if (!se.start_fixed) {
+        ends.start = g.start;
+        const double dir = std::atan2(p[1].y - p[0].y, p[1].x - p[0].x);
+        ends.start.hdg += 2 * std::numbers::pi * std::round((dir - g.start.hdg) / (2 * std::numbers::pi));
+    }
+    CurvatureModel m = build_structure(g.pieces, ends);
+    if (frame && !fit_in_frame(m, *frame, so.end, sigma, true, guided_prior).ok) {
+        return std::nullopt;
+    }
+    fix_curvatures(m);
+    return m;
+}
+
 // The candidate design of least penalised-likelihood score, read off the
 // curvature diagram (ks, kk) and fitted from the start pose se; nothing
 // where none is near enough the nodes. `floor_rms`, `floor_max`: the fit of
 // the smooth line the diagram came from, whose residuals bound what a design
 // can reach. `frame`: the trend filter's, where the diagram is its.
+// `guided`: a parallel track's design, tried first.
 std::optional<WindowFit> best_candidate(const std::vector<Point2>& p, const std::vector<double>& ks,
                                         const std::vector<double>& kk, const StructureEnds& se, SolveOptions so,
-                                        double floor_rms, double floor_max, double sigma,
-                                        const Frame* frame = nullptr) {
+                                        double floor_rms, double floor_max, double sigma, const Frame* frame,
+                                        const GuidedStructure* guided) {
     Selection sel(p, floor_rms, floor_max, sigma, std::move(so));
+    std::optional<WindowFit> best;
+    double best_score = std::numeric_limits<double>::infinity();
+    if (guided) {
+        if (auto m = guided_model(*guided, se, p, frame, sel.so, sigma)) {
+            best = sel.exact(std::move(*m), best_score, best_score, true);
+        }
+        best_score = best ? best_score : std::numeric_limits<double>::infinity();
+    }
     if (frame) {
-        if (auto best = best_screened(sel, candidate_structures(ks, kk), se, *frame)) {
-            return best;
+        if (auto screened = best_screened(sel, candidate_structures(ks, kk), se, *frame, best, best_score)) {
+            return screened;
         }
     }
-    return best_exact(sel, candidate_structures(ks, kk), se);
+    return best_exact(sel, candidate_structures(ks, kk), se, std::move(best), best_score);
 }
 
 } // namespace
 
 std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::vector<double>& ks,
                                      const std::vector<double>& kk, const StructureEnds& se,
-                                     SolveOptions so, const SolveReport& fine_report, double sigma) {
-    return best_candidate(p, ks, kk, se, std::move(so), fine_report.rms_m, fine_report.max_m, sigma);
+                                     SolveOptions so, const SolveReport& fine_report, double sigma,
+                                     const GuidedStructure* guided) {
+    return best_candidate(p, ks, kk, se, std::move(so), fine_report.rms_m, fine_report.max_m, sigma, nullptr,
+                          guided);
 }
 
 std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, bool start_at_switch,
-                                      SolveOptions so, double sigma) {
+                                      SolveOptions so, double sigma, const GuidedStructure* guided) {
     TrendEnds te;
     if (se.start_fixed) {
         te.start = se.start;
@@ -357,7 +407,7 @@ std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const Struct
         // diagram would be no guide, nor its residuals a bound.
         return std::nullopt;
     }
-    return best_candidate(p, e->s, e->k, from, std::move(so), rms, e->max_m, sigma, &e->frame);
+    return best_candidate(p, e->s, e->k, from, std::move(so), rms, e->max_m, sigma, &e->frame, guided);
 }
 
 } // namespace railodd::geometry::fit

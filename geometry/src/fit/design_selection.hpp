@@ -5,6 +5,7 @@
 // See docs/geometry.md, "Model selection by penalised likelihood".
 #include "curvature_model.hpp"
 #include "least_squares.hpp"
+#include "parallel_guide.hpp"
 #include "structure.hpp"
 
 #include <optional>
@@ -34,7 +35,8 @@ std::vector<std::size_t> far_nodes(const std::vector<double>& d, double sigma);
 // Nothing where no candidate comes near enough the nodes.
 std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::vector<double>& ks,
                                      const std::vector<double>& kk, const StructureEnds& se, SolveOptions so,
-                                     const SolveReport& fine_report, double sigma);
+                                     const SolveReport& fine_report, double sigma,
+                                     const GuidedStructure* guided = nullptr);
 
 // The same, with the curvature diagram read from the nodes themselves by
 // the trend filter (curvature_trend.hpp) instead of a fine spline: no
@@ -42,7 +44,9 @@ std::optional<WindowFit> best_design(const std::vector<Point2>& p, const std::ve
 // start pose is used where the start is tied); start_at_switch: the tied
 // start is a switch (not the previous window's end). Nothing where the window is
 // too small for the filter or no candidate comes near enough the nodes.
+// guided: a parallel track's design over the window (parallel_guide.hpp),
+// tried first in both.
 std::optional<WindowFit> trend_design(const std::vector<Point2>& p, const StructureEnds& se, bool start_at_switch,
-                                      SolveOptions so, double sigma);
+                                      SolveOptions so, double sigma, const GuidedStructure* guided = nullptr);
 
 } // namespace railodd::geometry::fit

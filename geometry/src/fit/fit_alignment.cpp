@@ -9,6 +9,7 @@
 #include "design_selection.hpp"
 #include "least_squares.hpp"
 #include "outlier_nodes.hpp"
+#include "parallel_guide.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 #include "structure.hpp"
 
@@ -147,7 +148,8 @@ fit::SolveOptions design_solve_options(const WindowEnds& ends, const FitOptions&
 // The fine spline's way: its curvature diagram segmented into candidate
 // designs; the spline itself (or a denser one) where none comes near. Taken
 // only where the trend filter's designs do not (fit_window).
-WindowFit fit_window_by_spline(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
+WindowFit fit_window_by_spline(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o,
+                               const fit::GuidedStructure* guided) {
     CurvatureModel fine = fine_spline(p, ends, o);
     fit::SolveOptions so = solve_options(ends, o);
     so.kink_sigma = o.kink_sigma;
@@ -171,7 +173,7 @@ WindowFit fit_window_by_spline(const std::vector<Point2>& p, const WindowEnds& e
     if (ends.end) {
         se.end_curvature = ends.end->curvature;
     }
-    if (auto best = best_design(p, ks, kk, se, so, fine_report, o.noise_sigma_m)) {
+    if (auto best = best_design(p, ks, kk, se, so, fine_report, o.noise_sigma_m, guided)) {
         return std::move(*best);
     }
     if (fine_report.max_m > 1.0) {
@@ -193,8 +195,15 @@ WindowFit fit_window_by_spline(const std::vector<Point2>& p, const WindowEnds& e
 }
 
 // The design read from the nodes by the trend filter where one comes near
-// them; else the fine spline's way.
-WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o) {
+// them; else the fine spline's way. Either way a parallel track's design
+// (guides, already fitted) is a candidate where the window runs beside it.
+WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o,
+                     const std::vector<IndexedAlignment>& guides) {
+    std::optional<fit::GuidedStructure> g;
+    for (std::size_t i = 0; i < guides.size() && !g; ++i) {
+        g = fit::guided_structure(p, guides[i]);
+    }
+    const fit::GuidedStructure* guided = g ? &*g : nullptr;
     fit::StructureEnds se;
     if (ends.start) {
         se.start = *ends.start;
@@ -203,10 +212,11 @@ WindowFit fit_window(const std::vector<Point2>& p, const WindowEnds& ends, const
     if (ends.end) {
         se.end_curvature = ends.end->curvature;
     }
-    if (auto best = fit::trend_design(p, se, ends.start_at_switch, design_solve_options(ends, o), o.noise_sigma_m)) {
+    if (auto best = fit::trend_design(p, se, ends.start_at_switch, design_solve_options(ends, o), o.noise_sigma_m,
+                                      guided)) {
         return std::move(*best);
     }
-    return fit_window_by_spline(p, ends, o);
+    return fit_window_by_spline(p, ends, o, guided);
 }
 
 // Where to cut a window's fit: at `preferred` if a straight is there, else
@@ -235,11 +245,11 @@ double window_cut(const Alignment& a, double preferred) {
 // fit_window, again without far nodes until none is left (at most three
 // rounds). `kept` says which of p the fit used.
 WindowFit fit_window_robust(const std::vector<Point2>& p, const WindowEnds& ends, const FitOptions& o,
-                            std::vector<bool>& kept) {
+                            const std::vector<IndexedAlignment>& guides, std::vector<bool>& kept) {
     kept.assign(p.size(), true);
     std::vector<std::size_t> index(p.size()); // of p, for each point fitted
     std::iota(index.begin(), index.end(), std::size_t{0});
-    WindowFit w = fit_window(p, ends, o);
+    WindowFit w = fit_window(p, ends, o, guides);
     for (int round = 0; round < 3; ++round) {
         const std::vector<std::size_t> far = fit::far_nodes(w.report.distances_m, o.noise_sigma_m);
         if (far.empty()) {
@@ -253,7 +263,7 @@ WindowFit fit_window_robust(const std::vector<Point2>& p, const WindowEnds& ends
         for (const std::size_t i : index) {
             q.push_back(p[i]);
         }
-        w = fit_window(q, ends, o);
+        w = fit_window(q, ends, o, guides);
     }
     return w;
 }
@@ -345,7 +355,8 @@ std::size_t window_end(const std::vector<double>& t, std::size_t i0, double wind
 // Fits p window by window into result (alignment, window counts); returns the
 // nodes (of p) some window's fit left out as far off.
 std::set<std::size_t> fit_windows(const std::vector<Point2>& p, std::optional<Pose> window_start,
-                                  const std::optional<Pose>& end, const FitOptions& o, FitResult& result) {
+                                  const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides,
+                                  FitResult& result) {
     const std::vector<double> t = chainage(p);
     std::set<std::size_t> far;
     for (std::size_t i0 = 0;;) {
@@ -354,7 +365,7 @@ std::set<std::size_t> fit_windows(const std::vector<Point2>& p, std::optional<Po
         const std::vector<Point2> wp(p.begin() + static_cast<long>(i0), p.begin() + static_cast<long>(i1) + 1);
         std::vector<bool> kept;
         const WindowFit w =
-            fit_window_robust(wp, {window_start, last ? end : std::nullopt, i0 == 0 && window_start}, o, kept);
+            fit_window_robust(wp, {window_start, last ? end : std::nullopt, i0 == 0 && window_start}, o, guides, kept);
         for (std::size_t j = 0; j < kept.size(); ++j) {
             if (!kept[j]) {
                 far.insert(i0 + j);
@@ -392,6 +403,11 @@ std::set<std::size_t> fit_windows(const std::vector<Point2>& p, std::optional<Po
 
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
                         const std::optional<Pose>& end, const FitOptions& options) {
+    return fit_alignment(points, start, end, options, {});
+}
+
+FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
+                        const std::optional<Pose>& end, const FitOptions& options, const std::vector<IndexedAlignment>& guides) {
     const std::vector<Point2> mapped = without_repeats(points);
     if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
@@ -411,7 +427,7 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     }
     FitResult result;
     const std::set<std::size_t> far =
-        fit_windows(p, start, end_target(p, chainage(p), start, end, o.noise_sigma_m), o, result);
+        fit_windows(p, start, end_target(p, chainage(p), start, end, o.noise_sigma_m), o, guides, result);
     std::vector<Point> all;
     all.reserve(mapped.size());
     for (const auto& q : mapped) {

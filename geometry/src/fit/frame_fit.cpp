@@ -57,8 +57,9 @@ FrameEnd frame_end(const Frame& f, const std::optional<Pose>& end) {
 // heavily weighted end rows.
 class FrameProblem {
 public:
-    FrameProblem(CurvatureModel& m, const Frame& f, const std::optional<Pose>& end, double sigma)
-        : m_(m), f_(f), ref_(f), end_(frame_end(f, end)), sigma_(sigma), scale_(f.s.size(), 1.0) {
+    FrameProblem(CurvatureModel& m, const Frame& f, const std::optional<Pose>& end, double sigma, double prior_sigma)
+        : m_(m), f_(f), ref_(f), end_(frame_end(f, end)), sigma_(sigma), prior_sigma_(prior_sigma),
+          scale_(f.s.size(), 1.0) {
         const double n0 = -std::sin(f.hdg[0]), n1 = std::cos(f.hdg[0]);
         y0_ = (m.start.x - f.x[0]) * n0 + (m.start.y - f.y[0]) * n1;
         phi0_ = wrap(m.start.hdg - f.hdg[0]);
@@ -125,8 +126,8 @@ public:
             const std::size_t start = m_.start_free ? 2 : 0;
             for (std::size_t v = 0; v < prior_.size(); ++v) {
                 const auto i = static_cast<Eigen::Index>(start + v);
-                nm(i, i) += 1.0 / (prior_sigma * prior_sigma);
-                rhs[i] += prior_[v] / (prior_sigma * prior_sigma);
+                nm(i, i) += 1.0 / (prior_sigma_ * prior_sigma_);
+                rhs[i] += prior_[v] / (prior_sigma_ * prior_sigma_);
             }
             normal.compute(nm);
             set_linear(normal.solve(rhs));
@@ -321,10 +322,10 @@ private:
     ReferenceHeading ref_;
     FrameEnd end_;
     double sigma_;
+    double prior_sigma_;
     std::vector<double> scale_;
     std::vector<double> reference_; // the reference's integral at each node
     std::vector<double> prior_;     // the curvature variables' first values
-    static constexpr double prior_sigma = 1e-3; // 1/m
     double y0_ = 0.0, phi0_ = 0.0, length_ = 0.0;
     ReferenceHeading::At at_end_;
 };
@@ -370,7 +371,7 @@ bool levenberg_marquardt(FrameProblem& fp, double min_length, bool move_knots) {
 } // namespace
 
 FrameFit fit_in_frame(CurvatureModel& m, const Frame& f, const std::optional<Pose>& end, double sigma,
-                      bool move_knots) {
+                      bool move_knots, double prior_sigma) {
     constexpr double min_length = 0.5, cap_sigmas = 5.0;
     FrameFit out;
     if (f.s.size() < 2 || f.hdg.size() < 2) {
@@ -379,7 +380,7 @@ FrameFit fit_in_frame(CurvatureModel& m, const Frame& f, const std::optional<Pos
     if (m.segments() == 0 || std::find(m.length_free.begin(), m.length_free.end(), 0) != m.length_free.end()) {
         return out; // structures have every length free
     }
-    FrameProblem fp(m, f, end, sigma);
+    FrameProblem fp(m, f, end, sigma, prior_sigma);
     bool ok = levenberg_marquardt(fp, min_length, move_knots);
     out.distances_m = fp.distances();
     // Nodes beyond the criterion's cap weighted down by (cap / distance)^2

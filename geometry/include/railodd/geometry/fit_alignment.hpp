@@ -26,6 +26,7 @@ struct FitOptions {
     double kink_sigma = 5e-4;      // 1/m: allowed change of curvature slope between knots of the fine spline
     double ridge_sigma = 2e-3;     // 1/m: weak pull of the fine spline towards zero curvature
     unsigned threads = 0;          // chains fitted at once by fit_track_graph; 0: one per hardware thread
+    bool parallel_guides = true;   // fit_track_graph offers a chain the design of the track it runs beside
 };
 
 struct FitQuality {
@@ -48,6 +49,13 @@ struct FitResult {
 // curvature) the alignment must begin / end with.
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
                         const std::optional<Pose>& end, const FitOptions& options);
+// The same with parallel tracks' fitted alignments as guides: where a
+// window's nodes run beside one (2.5-6.5 m off), its design, offset to them,
+// is a candidate (docs/geometry.md, "Parallel tracks"); the first that does
+// is taken.
+FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
+                        const std::optional<Pose>& end, const FitOptions& options,
+                        const std::vector<IndexedAlignment>& guides);
 
 // Distance of every point to the alignment.
 std::vector<double> distances(const Alignment& alignment, const std::vector<Point>& points);
