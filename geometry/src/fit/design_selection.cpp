@@ -68,14 +68,29 @@ std::size_t kinked_transitions(const Alignment& a) {
 }
 
 // Curves of an alignment: runs of elements between lines (a window that
-// starts or ends inside a curve counts it too).
+// starts or ends inside a curve counts it too), and within a run each
+// change of the curvature's sign: a reverse curve is two curves, and a
+// wiggle of short spirals through zero pays for every turn.
 std::size_t curves(const Alignment& a) {
+    constexpr double straight = 1.0 / 20000.0;
     std::size_t n = 0;
     bool in_curve = false;
+    int sign = 0;
     for (const Primitive& p : a.primitives) {
         const bool curved = p.kind != PrimitiveKind::line;
         n += curved && !in_curve ? 1 : 0;
         in_curve = curved;
+        if (!curved) {
+            sign = 0;
+            continue;
+        }
+        for (const double k : {p.curv_start, p.curv_end}) {
+            const int here = k > straight ? 1 : k < -straight ? -1 : 0;
+            if (here != 0) {
+                n += sign != 0 && here != sign ? 1 : 0;
+                sign = here;
+            }
+        }
     }
     return n;
 }
