@@ -79,7 +79,7 @@ TEST(FrameFit, RecoversKnotsAndCurvatureOfAKnownDesign) {
     ASSERT_EQ(f.e.size(), f.s.size());
 
     CurvatureModel m = curve(0.8 * k, 230.0, 50.0, 330.0, 60.0, total); // knots 30 m off, curvature 20 % low
-    const FrameFit fit = fit_in_frame(m, f, std::nullopt, 0.01, true);
+    const FrameFit fit = fit_in_frame(m, f, std::nullopt, 0.01);
     ASSERT_TRUE(fit.ok);
     double knot = 0.0, true_knot = 0.0;
     for (std::size_t j = 0; j + 1 < m.segments(); ++j) {
@@ -105,7 +105,7 @@ TEST(FrameFit, MeetsAnEndPoseAndRefusesLargeAngles) {
     const double turn = k * (80.0 / 2 + 300.0 + 80.0 / 2);
     const Pose end{total, f.e.back(), turn, 0.0};
     CurvatureModel m = curve(1.2 * k, 180.0, 100.0, 280.0, 100.0, total);
-    const FrameFit fit = fit_in_frame(m, f, end, 0.01, true);
+    const FrameFit fit = fit_in_frame(m, f, end, 0.01);
     ASSERT_TRUE(fit.ok);
     EXPECT_NEAR(m.curv[0] / k, 1.0, 0.005);
 
@@ -121,5 +121,5 @@ TEST(FrameFit, MeetsAnEndPoseAndRefusesLargeAngles) {
         sparse.s.push_back(s);
         sparse.e.push_back(std::tan(0.3) * s);
     }
-    EXPECT_FALSE(fit_in_frame(line, sparse, std::nullopt, 0.3, true).ok);
+    EXPECT_FALSE(fit_in_frame(line, sparse, std::nullopt, 0.3).ok);
 }

@@ -156,9 +156,9 @@ private:
         completion_.push_back(c);
     }
 
-    // Parallel tracks: each chain is offered the design of the longer chain
+    // Parallel tracks: each chain is offered the designs of the longer chains
     // it runs beside (parallel_chains.hpp), which it then waits for, unless
-    // that chain waits on it already.
+    // such a chain waits on it already.
     void plan_guides(const std::vector<std::size_t>& order) {
         if (!o_.parallel_guides) {
             return;

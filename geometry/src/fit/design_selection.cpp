@@ -135,21 +135,8 @@ std::vector<std::vector<Piece>> candidate_structures(const std::vector<double>& 
 SolveReport reweighted(CurvatureModel& m, const std::vector<Point2>& p, SolveOptions so, SolveReport r,
                        const Criterion& crit) {
     const double cap = std::sqrt(Criterion::cap) * crit.sigma;
-    const std::size_t most = 2 + p.size() / 50;
     std::vector<std::size_t> previous;
-    for (int round = 0; round < 3; ++round) {
-        std::vector<std::size_t> far;
-        so.point_scale.assign(p.size(), 1.0);
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            if (r.distances_m[i] > cap) {
-                so.point_scale[i] = cap / r.distances_m[i];
-                far.push_back(i);
-            }
-        }
-        if (far.empty() || far.size() > most || far == previous) {
-            break;
-        }
-        previous = far;
+    for (int round = 0; round < 3 && far_point_scale(r.distances_m, cap, previous, so.point_scale); ++round) {
         CurvatureModel trial = m;
         SolveReport t = solve(trial, p, so);
         if (t.gave_up || !t.end_met) {
@@ -294,15 +281,15 @@ std::optional<WindowFit> best_screened(Selection& sel, std::vector<std::vector<P
         bool near = false;
     };
     std::vector<Screened> screened;
-    auto fit = [&](Screened& c, bool move_knots) {
-        const FrameFit ff = fit_in_frame(c.m, frame, sel.so.end, sel.crit.sigma, move_knots);
+    auto fit = [&](Screened& c) {
+        const FrameFit ff = fit_in_frame(c.m, frame, sel.so.end, sel.crit.sigma);
         c.score = ff.ok ? sel.score(ff.distances_m, c.m) : std::numeric_limits<double>::infinity();
         c.near = ff.ok && near_enough(ff.distances_m, sel.max_allowed, sel.crit.sigma);
     };
     auto order = [](const Screened& a, const Screened& b) { return a.near != b.near ? a.near : a.score < b.score; };
     for (auto& pieces : candidates) {
         Screened c{build_structure(std::move(pieces), se)};
-        fit(c, true);
+        fit(c);
         if (std::isfinite(c.score)) {
             screened.push_back(std::move(c));
         }
@@ -340,9 +327,9 @@ void fix_curvatures(CurvatureModel& m) {
 // The guided candidate (parallel_guide.hpp): the neighbour's design, from
 // the window's tied start or the offset neighbour's pose (its heading
 // turned by whole turns to the nodes' own). In the filter's frame its
-// curvatures may move within a prior of 2e-5 1/m of the neighbour's (about
-// 2 % at R 1,000 m: room for the tied start's heading, not for a design of
-// its own), and are then fixed for the exact solve of lengths and start.
+// curvatures may move within a prior of 5e-6 1/m of the neighbour's (half a
+// percent at R 1,000 m: room for the tied start's heading, not for a design
+// of its own), and are then fixed for the exact solve of lengths and start.
 // Without a frame they stay the neighbour's.
 std::optional<CurvatureModel> guided_model(const GuidedStructure& g, const StructureEnds& se,
                                            const std::vector<Point2>& p, const Frame* frame, const SolveOptions& so,
@@ -355,7 +342,7 @@ std::optional<CurvatureModel> guided_model(const GuidedStructure& g, const Struc
         ends.start.hdg += 2 * std::numbers::pi * std::round((dir - g.start.hdg) / (2 * std::numbers::pi));
     }
     CurvatureModel m = build_structure(g.pieces, ends);
-    if (frame && !fit_in_frame(m, *frame, so.end, sigma, true, guided_prior).ok) {
+    if (frame && !fit_in_frame(m, *frame, so.end, sigma, guided_prior).ok) {
         return std::nullopt;
     }
     fix_curvatures(m);
@@ -377,9 +364,10 @@ std::optional<WindowFit> best_candidate(const std::vector<Point2>& p, const std:
     double best_score = std::numeric_limits<double>::infinity();
     if (guided) {
         if (auto m = guided_model(*guided, se, p, frame, sel.so, sigma)) {
-            best = sel.exact(std::move(*m), best_score, best_score, true);
+            double score = 0.0;
+            best = sel.exact(std::move(*m), best_score, score, true);
+            best_score = best ? score : best_score;
         }
-        best_score = best ? best_score : std::numeric_limits<double>::infinity();
     }
     if (frame) {
         if (auto screened = best_screened(sel, candidate_structures(ks, kk), se, *frame, best, best_score)) {

@@ -160,7 +160,6 @@ public:
 
     std::vector<double>& scale() { return scale_; }
 
-    // The model's start pose where it is free: the frame's start offset and heading.
     // The largest angle between the design and the reference, at the knots
     // and the nodes: beyond a tenth of a radian or so the small-angle model
     // no longer stands for the curve (a free start swung round, with a
@@ -191,6 +190,7 @@ public:
 
     double start_angle() const { return phi0_; }
 
+    // The model's start pose where it is free: the frame's start offset and heading.
     void write_start() {
         if (m_.start_free) {
             const double h0 = f_.hdg[0];
@@ -331,13 +331,13 @@ private:
 };
 
 // Levenberg-Marquardt over the knots' chainages.
-bool levenberg_marquardt(FrameProblem& fp, double min_length, bool move_knots) {
+bool levenberg_marquardt(FrameProblem& fp, double min_length) {
     Eigen::VectorXd x = fp.get(), r, r1;
     fp.residuals(x, r);
     double cost = r.squaredNorm(), mu = 1e-4;
     const auto n = static_cast<Eigen::Index>(fp.knots());
     Eigen::MatrixXd J(r.size(), n);
-    for (int it = 0; it < 30 && move_knots && n > 0 && std::isfinite(cost); ++it) {
+    for (int it = 0; it < 30 && n > 0 && std::isfinite(cost); ++it) {
         fp.residuals(x, r, &J);
         const Eigen::MatrixXd A = J.transpose() * J;
         const Eigen::VectorXd g = J.transpose() * r;
@@ -371,7 +371,7 @@ bool levenberg_marquardt(FrameProblem& fp, double min_length, bool move_knots) {
 } // namespace
 
 FrameFit fit_in_frame(CurvatureModel& m, const Frame& f, const std::optional<Pose>& end, double sigma,
-                      bool move_knots, double prior_sigma) {
+                      double prior_sigma) {
     constexpr double min_length = 0.5, cap_sigmas = 5.0;
     FrameFit out;
     if (f.s.size() < 2 || f.hdg.size() < 2) {
@@ -381,28 +381,14 @@ FrameFit fit_in_frame(CurvatureModel& m, const Frame& f, const std::optional<Pos
         return out; // structures have every length free
     }
     FrameProblem fp(m, f, end, sigma, prior_sigma);
-    bool ok = levenberg_marquardt(fp, min_length, move_knots);
+    bool ok = levenberg_marquardt(fp, min_length);
     out.distances_m = fp.distances();
-    // Nodes beyond the criterion's cap weighted down by (cap / distance)^2
-    // while few are so far (design_selection.cpp's reweighting, here).
-    const double cap = cap_sigmas * sigma;
-    const std::size_t most = 2 + f.s.size() / 50;
+    // Nodes beyond the criterion's cap weighted down while few are so far,
+    // as in the exact solve (design_selection.cpp).
     std::vector<std::size_t> previous;
-    for (int round = 0; round < 3 && ok; ++round) {
-        std::vector<std::size_t> far;
-        std::vector<double>& scale = fp.scale();
-        std::fill(scale.begin(), scale.end(), 1.0);
-        for (std::size_t i = 0; i < out.distances_m.size(); ++i) {
-            if (out.distances_m[i] > cap) {
-                scale[i] = cap / out.distances_m[i];
-                far.push_back(i);
-            }
-        }
-        if (far.empty() || far.size() > most || far == previous) {
-            break;
-        }
-        previous = far;
-        ok = levenberg_marquardt(fp, min_length, move_knots);
+    for (int round = 0; round < 3 && ok && far_point_scale(out.distances_m, cap_sigmas * sigma, previous, fp.scale());
+         ++round) {
+        ok = levenberg_marquardt(fp, min_length);
         out.distances_m = fp.distances();
     }
     // A fixed start may leave the reference at an angle (a branch drawn
@@ -410,10 +396,7 @@ FrameFit fit_in_frame(CurvatureModel& m, const Frame& f, const std::optional<Pos
     const double allowed = std::max(0.15, m.start_free ? 0.0 : 2.0 * std::abs(fp.start_angle()));
     ok = ok && fp.max_angle() <= allowed;
     fp.write_start();
-    for (const double d : out.distances_m) {
-        out.rss_m2 += d * d;
-    }
-    out.ok = ok && std::isfinite(out.rss_m2);
+    out.ok = ok && std::all_of(out.distances_m.begin(), out.distances_m.end(), [](double d) { return std::isfinite(d); });
     return out;
 }
 

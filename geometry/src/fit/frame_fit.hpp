@@ -24,18 +24,16 @@ struct Frame {
 
 struct FrameFit {
     std::vector<double> distances_m; // |offset of each node from the design|
-    double rss_m2 = 0.0;
-    bool ok = false; // finite, and every free length at least its minimum
+    bool ok = false; // converged to finite distances, within the small-angle model
 };
 
 // Fits m (its free lengths, curvatures and, where free, start pose) to the
 // nodes in frame f, robustly (nodes beyond 5 sigma weighted down while few),
 // meeting the window's end pose where one is given, else ending at the last
-// node. Without move_knots, the knots stay where they are (a linear
-// least-squares problem, solved at once). prior_sigma (1/m): how far a
-// curvature variable may stray from its first value where the nodes
-// hardly tell it (weak: 1e-3); a parallel track's design holds it tighter.
+// node. prior_sigma (1/m): how far a curvature variable may stray from its
+// first value where the nodes hardly tell it (weak: 1e-3); a parallel
+// track's design holds it tighter.
 FrameFit fit_in_frame(CurvatureModel& m, const Frame& f, const std::optional<Pose>& end, double sigma,
-                      bool move_knots, double prior_sigma = 1e-3);
+                      double prior_sigma = 1e-3);
 
 } // namespace railodd::geometry::fit

@@ -325,4 +325,22 @@ SolveReport solve(CurvatureModel& model, const std::vector<Point2>& points, cons
     return report;
 }
 
+bool far_point_scale(const std::vector<double>& distances, double cap, std::vector<std::size_t>& previous,
+                     std::vector<double>& scale) {
+    std::vector<std::size_t> far;
+    std::vector<double> out(distances.size(), 1.0);
+    for (std::size_t i = 0; i < distances.size(); ++i) {
+        if (distances[i] > cap) {
+            out[i] = cap / distances[i];
+            far.push_back(i);
+        }
+    }
+    if (far.empty() || far.size() > 2 + distances.size() / 50 || far == previous) {
+        return false;
+    }
+    previous = std::move(far);
+    scale = std::move(out);
+    return true;
+}
+
 } // namespace railodd::geometry::fit

@@ -57,4 +57,13 @@ std::vector<double> point_distances(const CurvatureModel& model, const std::vect
 
 SolveReport solve(CurvatureModel& model, const std::vector<Point2>& points, const SolveOptions& options);
 
+// One round of robust reweighting (iteratively reweighted least squares for
+// a likelihood capped at `cap` metres): the scale of every point further
+// than cap is cap / distance (squared in the cost). False, scale untouched,
+// where no point is so far, where too many are (more than 2 + n/50: then
+// the structure is wrong, not the points) or the same as the last round
+// (`previous`, which this updates).
+bool far_point_scale(const std::vector<double>& distances, double cap, std::vector<std::size_t>& previous,
+                     std::vector<double>& scale);
+
 } // namespace railodd::geometry::fit
