@@ -25,8 +25,8 @@ namespace railodd::cli {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-BatchProgress::BatchProgress(std::size_t total, unsigned jobs, bool terminal)
-    : total_(total), jobs_(jobs), terminal_(terminal) {}
+BatchProgress::BatchProgress(std::size_t total, unsigned jobs, bool terminal, std::string noun)
+    : total_(total), jobs_(jobs), terminal_(terminal), noun_(std::move(noun)) {}
 
 void BatchProgress::clear_line() {
     if (line_shown_) {
@@ -58,7 +58,7 @@ void BatchProgress::running(const std::vector<std::pair<std::string, std::string
         return;
     }
     std::ostringstream line;
-    line << "routes " << done_ << '/' << total_ << ", running:";
+    line << noun_ << ' ' << done_ << '/' << total_ << ", running:";
     for (const auto& [id, phase] : id_phase) {
         line << ' ' << id << " (" << phase << ')';
     }
@@ -102,7 +102,7 @@ std::string error_line(const fs::path& log) {
 
 // posix_spawn: vfork semantics, so a large parent is not copied per route.
 pid_t spawn(const BatchStep& step, std::string& error) {
-    std::vector<std::string> args{"railodd"};
+    std::vector<std::string> args{step.program.empty() ? "railodd" : step.program};
     args.insert(args.end(), step.args.begin(), step.args.end());
     std::vector<char*> argv;
     for (auto& a : args) {
@@ -116,10 +116,11 @@ pid_t spawn(const BatchStep& step, std::string& error) {
     posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
     posix_spawn_file_actions_addchdir_np(&fa, step.cwd.c_str());
     pid_t pid = -1;
-    const int rc = ::posix_spawn(&pid, "/proc/self/exe", &fa, nullptr, argv.data(), environ);
+    const std::string program = step.program.empty() ? "/proc/self/exe" : step.program;
+    const int rc = ::posix_spawn(&pid, program.c_str(), &fa, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) {
-        error = "cannot start railodd " + step.name + ": " + std::strerror(rc);
+        error = "cannot start " + (step.program.empty() ? "railodd " + step.name : step.program) + ": " + std::strerror(rc);
         return -1;
     }
     return pid;

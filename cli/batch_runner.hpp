@@ -17,6 +17,7 @@ struct BatchStep {
     std::vector<std::string> args;  // argv after the executable
     std::filesystem::path log;      // stdout and stderr of the step (absolute)
     std::filesystem::path cwd;      // the step runs there (absolute)
+    std::string program;            // executable (absolute); empty: railodd itself
 };
 
 struct BatchTask {
@@ -38,7 +39,7 @@ struct TaskOutcome {
 // their phase and an ETA.
 class BatchProgress {
 public:
-    BatchProgress(std::size_t total, unsigned jobs, bool terminal);
+    BatchProgress(std::size_t total, unsigned jobs, bool terminal, std::string noun = "routes");
     void finished(const std::string& id, const std::string& status, double seconds, const std::string& detail);
     void running(const std::vector<std::pair<std::string, std::string>>& id_phase);
     void close();
@@ -52,6 +53,7 @@ private:
     std::chrono::steady_clock::time_point last_finish_ = std::chrono::steady_clock::now();
     unsigned jobs_;
     bool terminal_;
+    std::string noun_;
     bool line_shown_ = false;
 };
 

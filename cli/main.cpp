@@ -3,6 +3,7 @@
 #include "command.hpp"
 #include "convert_command.hpp"
 #include "merge_command.hpp"
+#include "play_command.hpp"
 #include "profile_command.hpp"
 #include "sample_command.hpp"
 #include "scenarios_command.hpp"
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     commands.push_back(std::make_unique<cli::BatchCommand>());
     commands.push_back(std::make_unique<cli::ConvertCommand>());
     commands.push_back(std::make_unique<cli::MergeCommand>());
+    commands.push_back(std::make_unique<cli::PlayCommand>());
     commands.push_back(std::make_unique<cli::ProfileCommand>());
     commands.push_back(std::make_unique<cli::SampleCommand>());
     commands.push_back(std::make_unique<cli::ScenariosCommand>());

@@ -90,9 +90,9 @@ std::string resolved(const pugi::xml_document& doc, const std::string& value) {
     return value;
 }
 
-// The street vehicle starts 10 m along the crossing road from the crossing,
-// facing it: the road's line (road_line_deg) is consistent with the crossing
-// angle, and the start lies on that line in road coordinates.
+// The street vehicle starts on the crossing road's own lane (the profile
+// names the road, its s at the crossing and its lanes), 10 m before the
+// crossing, and its path ends where the road meets the track.
 void street_vehicle_on_the_road(const fs::path& xosc, const json& anchor, const json& profile) {
     const json* crossing = nullptr;
     for (const auto& e : profile["elements"]) {
@@ -101,15 +101,21 @@ void street_vehicle_on_the_road(const fs::path& xosc, const json& anchor, const 
         }
     }
     ASSERT_NE(crossing, nullptr);
-    const double line = (*crossing)["attributes"]["road_line_deg"], angle = (*crossing)["attributes"]["angle"];
-    EXPECT_NEAR(std::min(line, 180.0 - line), angle, 1e-9);
+    const json& at = (*crossing)["attributes"];
+    ASSERT_TRUE(at.contains("crossing_road_id"));
+    const std::string road = at["crossing_road_id"];
+    EXPECT_NE(road, anchor["road_id"].get<std::string>());
+    const double s_cross = at["crossing_road_s"];
     pugi::xml_document doc;
     ASSERT_TRUE(doc.load_file(xosc.c_str()));
     const auto start = doc.select_node("//Private[@entityRef='StreetVehicle']//LanePosition").node();
-    const double theta = line * M_PI / 180.0;
-    EXPECT_NEAR(start.attribute("s").as_double(), anchor["s"].get<double>() - 10.0 * std::cos(theta), 1e-5);
-    EXPECT_NEAR(start.attribute("offset").as_double(), -10.0 * std::sin(theta), 1e-5);
-    EXPECT_NEAR(start.child("Orientation").attribute("h").as_double(), theta, 1e-5);
+    EXPECT_EQ(start.attribute("roadId").value(), road);
+    EXPECT_EQ(start.attribute("laneId").as_int(), at["crossing_road_forward_lane"].get<double>());
+    EXPECT_NEAR(start.attribute("s").as_double(), s_cross - 10.0, 1e-5);
+    EXPECT_NEAR(start.attribute("offset").as_double(), 0.0, 1e-9);
+    const auto end = doc.select_node("//Event[@name='StreetVehicleStarts']//Polyline/Vertex[last()]//LanePosition").node();
+    EXPECT_EQ(end.attribute("roadId").value(), road);
+    EXPECT_NEAR(end.attribute("s").as_double(), s_cross, 1e-5);
 }
 
 } // namespace

@@ -173,8 +173,15 @@ TEST(ScenarioXoscWriter, TriggersTheWalkerByEgoDistanceAndStopsByTimeOrEnd) {
     const std::string event = "//ManeuverGroup[@name='WalkerGroup']/Maneuver/Event";
     EXPECT_EQ(attribute(doc, "//ManeuverGroup[@name='WalkerGroup']/Actors/EntityRef", "entityRef"), "Walker");
     EXPECT_EQ(attribute(doc, event + "//AbsoluteTargetSpeed", "value"), "1.4");
-    EXPECT_EQ(attribute(doc, event + "//AcquirePositionAction/Position/LanePosition", "laneId"), "-1");
-    const std::string cond = event + "/StartTrigger/ConditionGroup/Condition/ByEntityCondition";
+    const std::string path = event + "[@name='WalkerStarts']//FollowTrajectoryAction";
+    EXPECT_EQ(attribute(doc, path + "//Polyline/Vertex[last()]/Position/LanePosition", "laneId"), "-1");
+    EXPECT_TRUE(select(doc, path + "/TimeReference/None")) << "at the walker's own speed";
+    // At the end of its path the walker stops.
+    const std::string stops = event + "[@name='WalkerStops']";
+    EXPECT_EQ(attribute(doc, stops + "//StoryboardElementStateCondition", "storyboardElementRef"), "WalkerToTarget");
+    EXPECT_EQ(attribute(doc, stops + "//StoryboardElementStateCondition", "state"), "endTransition");
+    EXPECT_EQ(attribute(doc, stops + "//AbsoluteTargetSpeed", "value"), "0");
+    const std::string cond = event + "[@name='WalkerStarts']/StartTrigger/ConditionGroup/Condition/ByEntityCondition";
     EXPECT_EQ(attribute(doc, cond + "/TriggeringEntities/EntityRef", "entityRef"), "Ego");
     EXPECT_EQ(attribute(doc, cond + "/EntityCondition/TraveledDistanceCondition", "value"), "120");
     EXPECT_EQ(attribute(doc, "//Act/StartTrigger//SimulationTimeCondition", "rule"), "greaterThan");

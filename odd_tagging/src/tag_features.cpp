@@ -74,6 +74,26 @@ void tag_switches(TagContext& ctx) {
     }
 }
 
+// Where road users cross: the crossing road's id and s in map.xodr and its
+// lanes there (scenarios put road users on them, not beside the track).
+void add_crossing_road(const TagContext& ctx, const geometry::RoadRailCrossing& c, std::vector<TaggedAttribute>& a) {
+    const auto road = xodr::crossing_road(ctx.map(), c.road_way_id, c.point);
+    if (!road) {
+        return;
+    }
+    a.push_back({"crossing_road_id", road->road_id});
+    a.push_back({"crossing_road_s", road->s});
+    const std::pair<const char*, int> lanes[] = {{"crossing_road_forward_lane", road->forward_lane},
+                                                 {"crossing_road_backward_lane", road->backward_lane},
+                                                 {"crossing_road_forward_walk", road->forward_walk},
+                                                 {"crossing_road_backward_walk", road->backward_walk}};
+    for (const auto& [name, lane] : lanes) {
+        if (lane != 0) {
+            a.push_back({name, static_cast<double>(lane)});
+        }
+    }
+}
+
 void tag_crossings(TagContext& ctx) {
     static const std::set<std::string> foot{"footway", "path", "cycleway", "pedestrian", "steps", "bridleway"};
     std::map<std::int64_t, const ingest::Way*> roads;
@@ -103,6 +123,7 @@ void tag_crossings(TagContext& ctx) {
                 }
             }
         }
+        add_crossing_road(ctx, c, a);
         if (!footpath) {
             const Element* el = ctx.taxonomy().find("Scenery/Crossings/Level crossing");
             const Attribute* rc = ctx.taxonomy().attribute(*el, "road_class");

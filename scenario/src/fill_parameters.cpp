@@ -66,7 +66,11 @@ void declare_environment(ConcreteScenario& sc, const std::string& element_id, co
         declare(sc, pn::fog_visual_range, "double", fixed(e.fog_visual_range_m));
     } else if (element_id == "en.il.time") {
         if (attribute == "period") {
-            declare(sc, pn::time_of_day, "dateTime", e.date_time);
+            // Declared as a string holding the ISO date-time: players read
+            // the attribute's text either way, and esmini 3.6 refuses
+            // dateTime-typed parameters ("not supported yet"), leaving the
+            // time of day unapplied.
+            declare(sc, pn::time_of_day, "string", e.date_time);
             declare(sc, pn::sun_azimuth, "double", fixed(e.sun_azimuth_rad));
         }
         declare(sc, pn::sun_elevation, "double", fixed(e.sun_elevation_rad));

@@ -20,6 +20,7 @@ constexpr double platform_edge_m = 2.0;  // from the track centre: the edge is ~
 constexpr double beside_track_m = 3.5;   // beyond the clearance gauge
 constexpr double crossing_approach_m = 10.0; // on the road, short of the barriers
 constexpr double fallback_speed_kmh = 80.0; // where no speed limit is mapped
+constexpr double across_step_m = 1.0;       // along the track while stepping across it
 
 const ParameterDomain* varied_param(const TemplateContext& ctx, const Row& row, std::size_t dim, std::size_t& value) {
     if (dim + 1 >= row.size() || row[dim + 1] == kUnset) {
@@ -103,48 +104,106 @@ std::vector<CoveredValue> cover_map(const TemplateContext& ctx, const Anchor& a,
     return out;
 }
 
-// A road user at a level crossing stands on the road: the profile gives the
-// road's line across the track (road_line_deg, counterclockwise from the
-// road's s direction), so a point `d` metres along the road from the crossing
-// lies at s - d cos(theta) and offset -d sin(theta) on the right side, facing
-// the crossing. The road is taken as straight over those metres.
-std::optional<LanePlacement> on_crossing_road(const TemplateContext& ctx, const Anchor& a, const LanePlacement& at,
-                                              double side) {
-    const auto* v = ctx.profile.elements[a.element].find("road_line_deg");
-    if (!v || !std::holds_alternative<double>(*v)) {
+double number_attribute(const TemplateContext& ctx, const Anchor& a, const char* name) {
+    const auto* v = ctx.profile.elements[a.element].find(name);
+    return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : 0.0;
+}
+
+// A road user at a level crossing starts on the crossing road's own lane,
+// crossing_approach_m before the crossing point, and moves along that lane
+// (sampled every 2 m, so the path follows the road) to the point where the
+// road meets the track. A pedestrian takes the road's sidewalk where it has
+// one. The lane travelling in +s is taken where there is room before the
+// crossing; else the one travelling in -s. Nothing where the profile names
+// no crossing road (a crossing inside a road junction).
+std::optional<std::vector<LanePlacement>> crossing_road_path(const TemplateContext& ctx, const Anchor& a,
+                                                             bool pedestrian) {
+    const auto* id = ctx.profile.elements[a.element].find("crossing_road_id");
+    if (!id || !std::holds_alternative<std::string>(*id)) {
         return std::nullopt;
     }
-    const double theta = std::get<double>(*v) * std::numbers::pi / 180.0;
-    LanePlacement p = at;
-    p.reversed = false;
-    p.s = at.s + side * crossing_approach_m * std::cos(theta);
-    p.offset = side * crossing_approach_m * std::sin(theta);
-    p.heading = side < 0.0 ? theta : theta + std::numbers::pi;
-    return p;
+    const double s_cross = number_attribute(ctx, a, "crossing_road_s");
+    const int fwd = static_cast<int>(number_attribute(ctx, a, pedestrian ? "crossing_road_forward_walk" : "crossing_road_forward_lane"));
+    const int bwd = static_cast<int>(number_attribute(ctx, a, pedestrian ? "crossing_road_backward_walk" : "crossing_road_backward_lane"));
+    if (pedestrian && fwd == 0 && bwd == 0) {
+        return crossing_road_path(ctx, a, false);
+    }
+    const bool forward = fwd != 0 && (s_cross >= crossing_approach_m || bwd == 0);
+    if (!forward && bwd == 0) {
+        return std::nullopt;
+    }
+    const double dir = forward ? 1.0 : -1.0;
+    const double s0 = std::max(0.0, s_cross - dir * crossing_approach_m);
+    std::vector<LanePlacement> path;
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(s_cross - s0) / 2.0)));
+    for (int i = 0; i <= steps; ++i) {
+        LanePlacement p;
+        p.road_id = std::get<std::string>(*id);
+        p.lane_id = forward ? fwd : bwd;
+        p.s = s0 + (s_cross - s0) * i / steps;
+        p.reversed = !forward;
+        path.push_back(p);
+    }
+    return path;
 }
 
 Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asset& asset, const Anchor& a, double side) {
     Actor actor = actor_from(asset, t.name);
+    actor.place = to_string(t.place);
     const auto at = ctx.lines.at(a.line, std::clamp(a.chainage + t.along_m, a.start_chainage, a.end_chainage));
     actor.start = at.value_or(a.place);
     actor.start.offset = lateral_offset(t.place, side);
     const LanePlacement on_track = actor.start;
-    const auto road = t.place == Lateral::crossing_approach ? on_crossing_road(ctx, a, on_track, side) : std::nullopt;
+    const auto road = t.place == Lateral::crossing_approach
+                          ? crossing_road_path(ctx, a, actor.kind == Actor::Kind::pedestrian)
+                          : std::nullopt;
     if (road) {
-        actor.start = *road;
+        actor.start = road->front();
     }
     if (t.move_to) {
-        // Along the road onto the crossing keeps the road user's heading.
-        LanePlacement target = actor.start;
-        target.s = on_track.s;
-        target.offset = lateral_offset(*t.move_to, side);
-        actor.target = target;
+        actor.move_to = to_string(*t.move_to);
+        if (road && *t.move_to == Lateral::on_track) {
+            actor.path = *road;
+        } else {
+            // Across the track: off-road actors (people, animals) step onto
+            // or off it, a metre on in the ego's direction of travel (a
+            // player may measure a polyline's progress along s: esmini 3.6
+            // ends a path with no progress in s at once, unmoved).
+            LanePlacement target = on_track;
+            target.offset = lateral_offset(*t.move_to, side);
+            target.s += on_track.reversed ? -across_step_m : across_step_m;
+            actor.path = {actor.start, target};
+        }
+        actor.target = actor.path.back();
         actor.target_speed_mps = t.move_speed_kmh / 3.6;
+        actor.hazard_before_m = t.hazard_before_m;
     }
     if (!t.behaviour.empty()) {
         actor.properties.emplace_back("behaviour", t.behaviour);
     }
     return actor;
+}
+
+double path_length(const std::vector<LanePlacement>& path) {
+    double len = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        len += std::hypot(path[i].s - path[i - 1].s, path[i].offset - path[i - 1].offset);
+    }
+    return len;
+}
+
+// The ego's travelled distance at which an actor's move starts. With
+// hazard_before_m, timed from the ego's speed and the actor's path so that
+// the actor reaches its target when the ego's front is that far short of
+// the conflict point (the anchor, moved along_m); where the run-up is too
+// short for that, at once.
+double move_trigger(const ActorTemplate& t, const Actor& actor, const Anchor& a, const Actor& ego) {
+    const double run_up = a.chainage + t.along_m - a.start_chainage;
+    if (!t.hazard_before_m) {
+        return std::max(0.0, a.chainage - a.start_chainage - t.trigger_before_m);
+    }
+    const double move_s = path_length(actor.path) / std::max(actor.target_speed_mps, 0.1);
+    return std::max(0.0, run_up - *t.hazard_before_m - ego.dimensions.length / 2.0 - ego.speed_mps * move_s);
 }
 
 } // namespace
@@ -240,7 +299,7 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
         rec.assets.emplace_back(t.name, asset.id);
         cover_asset(ctx, asset, rec.odd_elements);
         if (t.move_to) {
-            trigger = std::min(trigger, std::max(0.0, a.chainage - a.start_chainage - t.trigger_before_m));
+            trigger = std::min(trigger, move_trigger(t, sc.others.back(), a, sc.ego));
         }
     }
     sc.trigger_distance_m = std::isfinite(trigger) ? trigger : 0.0;

@@ -40,6 +40,51 @@ ojson anchor_json(const ScenarioRecord& rec, const odd::OddProfile& profile) {
     return j;
 }
 
+const char* kind_name(Actor::Kind k) {
+    switch (k) {
+    case Actor::Kind::vehicle: return "vehicle";
+    case Actor::Kind::pedestrian: return "pedestrian";
+    case Actor::Kind::misc_object: return "misc_object";
+    }
+    return "vehicle";
+}
+
+// Where each actor starts and goes, as the template put it: what `railodd
+// play` checks the recorded trajectories against.
+ojson actors_json(const ConcreteScenario& sc) {
+    ojson out = ojson::array();
+    for (const Actor& a : sc.others) {
+        ojson j = {{"name", a.name}, {"asset", a.asset_id}, {"kind", kind_name(a.kind)}, {"place", a.place},
+                   {"start", lane_json(a.start)}};
+        if (a.target) {
+            j["move_to"] = a.move_to;
+            j["target"] = lane_json(*a.target);
+            j["speed_mps"] = a.target_speed_mps;
+            if (a.hazard_before_m) {
+                j["hazard_before_m"] = *a.hazard_before_m;
+            }
+        }
+        j["length_m"] = a.dimensions.length;
+        j["width_m"] = a.dimensions.width;
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
+ojson route_roads(const Actor& ego) {
+    ojson roads = ojson::array();
+    auto add = [&](const std::string& id) {
+        if (roads.empty() || roads.back() != id) {
+            roads.push_back(id);
+        }
+    };
+    add(ego.start.road_id);
+    for (const auto& w : ego.route) {
+        add(w.road_id);
+    }
+    return roads;
+}
+
 ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile, const OutputInfo& info) {
     const ConcreteScenario& sc = rec.scenario;
     ojson params = ojson::object();
@@ -76,7 +121,10 @@ ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile, c
             {"ego", {{"asset", sc.ego.asset_id}, {"start", lane_json(sc.ego.start)},
                      {"run_up_m", a.chainage - a.start_chainage}, {"overrun_m", a.end_chainage - a.chainage},
                      {"speed_kmh", sc.ego.speed_mps * 3.6}, {"speed_basis", rec.speed_basis},
-                     {"trigger_distance_m", sc.trigger_distance_m}}},
+                     {"trigger_distance_m", sc.trigger_distance_m}, {"route_roads", route_roads(sc.ego)},
+                     {"length_m", sc.ego.dimensions.length}, {"width_m", sc.ego.dimensions.width},
+                     {"max_deceleration", sc.ego.max_deceleration}}},
+            {"actors", actors_json(sc)},
             {"assets", std::move(assets)},
             {"perturbations", std::move(perturbations)},
             {"odd_elements", std::move(covered)},

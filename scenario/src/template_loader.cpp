@@ -198,7 +198,7 @@ private:
         const std::string w = what + ": actor '" + a.name + "'";
         yaml::check_keys(file_, node,
                          {"name", "asset_class", "place", "along_m", "move_to", "move_speed_kmh", "trigger_before_m",
-                          "behaviour"},
+                          "hazard_before_m", "behaviour"},
                          w);
         yaml::require(file_, node["name"], a.name != "Ego", w + ": the name Ego is the train's");
         for (const auto& other : t.actors) {
@@ -213,6 +213,11 @@ private:
         if (node["move_to"]) a.move_to = lateral(node["move_to"], w + ": 'move_to'");
         if (node["move_speed_kmh"]) a.move_speed_kmh = yaml::number(file_, node["move_speed_kmh"], w + ": 'move_speed_kmh'");
         if (node["trigger_before_m"]) a.trigger_before_m = yaml::number(file_, node["trigger_before_m"], w + ": 'trigger_before_m'");
+        if (node["hazard_before_m"]) {
+            yaml::require(file_, node["hazard_before_m"], !node["trigger_before_m"],
+                          w + ": give 'hazard_before_m' or 'trigger_before_m', not both");
+            a.hazard_before_m = yaml::number(file_, node["hazard_before_m"], w + ": 'hazard_before_m'");
+        }
         yaml::require(file_, node, !a.move_to || a.move_speed_kmh > 0.0, w + ": 'move_to' needs a positive 'move_speed_kmh'");
         if (node["behaviour"]) a.behaviour = yaml::scalar(file_, node["behaviour"], w + ": 'behaviour'");
         return a;

@@ -90,6 +90,31 @@ pugi::xml_node ego_condition(pugi::xml_node group, const std::string& name, cons
     return by.append_child("EntityCondition");
 }
 
+// The motion as a polyline trajectory through the path's lane positions,
+// taken at the actor's own speed (TimeReference None): players steer it
+// along the path, where an AcquirePositionAction leaves the way to their
+// router (esmini drove road users along the railway) and competes with the
+// SpeedAction for the longitudinal domain.
+void follow_path(pugi::xml_node event, const Actor& a) {
+    pugi::xml_node action = event.append_child("Action");
+    attr(action, "name", a.name + "ToTarget");
+    pugi::xml_node follow =
+        action.append_child("PrivateAction").append_child("RoutingAction").append_child("FollowTrajectoryAction");
+    pugi::xml_node trajectory = follow.append_child("TrajectoryRef").append_child("Trajectory");
+    attr(trajectory, "name", a.name + "Path");
+    attr(trajectory, "closed", "false");
+    pugi::xml_node polyline = trajectory.append_child("Shape").append_child("Polyline");
+    std::vector<LanePlacement> path = a.path;
+    if (path.empty()) {
+        path = {a.start, *a.target};
+    }
+    for (const auto& p : path) {
+        position(polyline.append_child("Vertex"), p);
+    }
+    follow.append_child("TimeReference").append_child("None");
+    attr(follow.append_child("TrajectoryFollowingMode"), "followingMode", "position");
+}
+
 void actor_maneuver_group(pugi::xml_node act, const Actor& a, const Context& cx) {
     pugi::xml_node group = act.append_child("ManeuverGroup");
     attr(group, "maximumExecutionCount", 1);
@@ -108,14 +133,27 @@ void actor_maneuver_group(pugi::xml_node act, const Actor& a, const Context& cx)
     pugi::xml_node speed = event.append_child("Action");
     attr(speed, "name", a.name + "Speed");
     speed_action(speed.append_child("PrivateAction"), cx.value(a.name + "Speed", a.target_speed_mps));
-    pugi::xml_node move = event.append_child("Action");
-    attr(move, "name", a.name + "ToTarget");
-    position(move.append_child("PrivateAction").append_child("RoutingAction").append_child("AcquirePositionAction"),
-             *a.target);
-
+    follow_path(event, a);
     pugi::xml_node start = event.append_child("StartTrigger").append_child("ConditionGroup");
     pugi::xml_node travelled = ego_condition(start, "EgoTravelled", cx).append_child("TraveledDistanceCondition");
     attr(travelled, "value", cx.scenario().trigger_distance_m);
+
+    // At the end of its path the actor stops (a car on the crossing, a
+    // person on the track): without it a player's default controller drives
+    // on along the lane.
+    pugi::xml_node stop = maneuver.append_child("Event");
+    attr(stop, "name", a.name + "Stops");
+    attr(stop, "priority", cx.rev_minor() < 2 ? "overwrite" : "override");
+    attr(stop, "maximumExecutionCount", 1);
+    pugi::xml_node halt = stop.append_child("Action");
+    attr(halt, "name", a.name + "Halt");
+    speed_action(halt.append_child("PrivateAction"), "0");
+    pugi::xml_node done = condition(stop.append_child("StartTrigger").append_child("ConditionGroup"), a.name + "AtTarget")
+                              .append_child("ByValueCondition")
+                              .append_child("StoryboardElementStateCondition");
+    attr(done, "storyboardElementType", "action");
+    attr(done, "storyboardElementRef", a.name + "ToTarget");
+    attr(done, "state", "endTransition");
 }
 
 } // namespace

@@ -23,10 +23,10 @@ struct RoadHit {
     double s = 0.0;
 };
 
-RoadHit find_road(const FeatureContext& ctx, std::int64_t way_id, const ingest::XY& p) {
+RoadHit find_road(const std::vector<BuiltRoad>& roads, std::int64_t way_id, const ingest::XY& p) {
     RoadHit best;
     double best_d = std::numeric_limits<double>::infinity();
-    for (const auto& br : ctx.build.roads) {
+    for (const auto& br : roads) {
         if (std::find(br.way_ids.begin(), br.way_ids.end(), way_id) == br.way_ids.end()) {
             continue;
         }
@@ -112,7 +112,50 @@ void add_road_side(FeatureContext& ctx, Road& road, double s, const geometry::Ro
     }
 }
 
+// The lane section holding s.
+const LaneSection& section_at(const Road& r, double s) {
+    const LaneSection* at = &r.lane_sections.front();
+    for (const auto& ls : r.lane_sections) {
+        if (ls.s <= s + 1e-9) {
+            at = &ls;
+        }
+    }
+    return *at;
+}
+
+// The innermost lane of a type on one side (0: none).
+int innermost(const std::vector<Lane>& side, const char* type) {
+    for (const auto& l : side) {
+        if (l.type == type) {
+            return l.id;
+        }
+    }
+    return 0;
+}
+
 } // namespace
+
+std::optional<CrossingRoad> crossing_road(const MapBuild& build, std::int64_t way_id, const ingest::XY& point) {
+    const RoadHit hit = find_road(build.roads, way_id, point);
+    if (!hit.road) {
+        return std::nullopt;
+    }
+    const Road& road = road_by_id(build.map, hit.road->road_id);
+    const LaneSection& ls = section_at(road, hit.s);
+    // Right-hand traffic drives the right (negative) lanes in +s, left-hand
+    // traffic the left ones.
+    const bool lht = road.rule == "LHT";
+    const auto& fwd = lht ? ls.left : ls.right;
+    const auto& bwd = lht ? ls.right : ls.left;
+    CrossingRoad c;
+    c.road_id = road.id;
+    c.s = hit.s;
+    c.forward_lane = innermost(fwd, "driving");
+    c.backward_lane = innermost(bwd, "driving");
+    c.forward_walk = innermost(fwd, "sidewalk");
+    c.backward_walk = innermost(bwd, "sidewalk");
+    return c;
+}
 
 void add_level_crossings(FeatureContext& ctx) {
     for (const auto& c : ctx.in.crossings.road_rail) {
@@ -124,7 +167,7 @@ void add_level_crossings(FeatureContext& ctx) {
         if (!loc) {
             continue; // the track was not written: listed in tracks_not_written
         }
-        const RoadHit hit = find_road(ctx, c.road_way_id, c.point);
+        const RoadHit hit = find_road(ctx.build.roads, c.road_way_id, c.point);
         std::vector<UserData> trace{{"osm", "way:" + std::to_string(c.road_way_id) +
                                                 (c.level_crossing_node ? ",node:" + std::to_string(c.level_crossing_node) : "")}};
         Road& track = ctx.build.map.roads[loc->road];

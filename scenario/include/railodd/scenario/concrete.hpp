@@ -51,8 +51,13 @@ struct Actor {
     std::vector<LanePlacement> route;   // waypoints of an AssignRouteAction, in travel order (ego)
     // A motion started by the trigger: move to `target` at `target_speed_mps`
     // (a pedestrian stepping onto the track, a car driving onto the crossing).
+    // The motion's path (its first point the start, its last the target);
+    // the actor stops at its end.
     std::optional<LanePlacement> target;
+    std::vector<LanePlacement> path;
     double target_speed_mps = 0.0;
+    std::string place, move_to; // the template's places (templates.hpp Lateral), for the manifest and play checks
+    std::optional<double> hazard_before_m; // the template's timing: at the target when the ego's front is this far short
     std::vector<std::pair<std::string, std::string>> properties; // <Properties>: odd attributes, behaviour file
 };
 

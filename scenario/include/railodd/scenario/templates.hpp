@@ -66,6 +66,9 @@ struct ActorTemplate {
     std::optional<Lateral> move_to; // moves there when triggered
     double move_speed_kmh = 0.0;
     double trigger_before_m = 0.0;  // the move starts when the ego is this far from the anchor
+    // Or: the move is timed so that the actor reaches its target (the hazard
+    // happens) when the ego's front is this far short of it.
+    std::optional<double> hazard_before_m;
     std::string behaviour;          // the asset element's behaviour value, or free text for behavior.yaml
     int line = 0;
 };

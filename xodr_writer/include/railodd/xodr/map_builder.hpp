@@ -9,6 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
+#include <string>
+
 namespace railodd::xodr {
 
 struct MapInput {
@@ -60,6 +63,19 @@ struct MapBuild {
 };
 
 MapBuild build_map(const MapInput& input, const MapOptions& options);
+
+// The written road a road way crosses a track on, at the crossing point: the
+// lanes a road user takes onto the crossing. Nothing where the point lies on
+// no road of that way (cut back inside a road junction, or not written).
+struct CrossingRoad {
+    std::string road_id;
+    double s = 0.0;           // the crossing point's s on the road
+    int forward_lane = 0;     // driving lane travelling in +s (0: none)
+    int backward_lane = 0;    // driving lane travelling in -s (0: none)
+    int forward_walk = 0;     // sidewalk lane on the forward side (0: none)
+    int backward_walk = 0;    // sidewalk lane on the backward side
+};
+std::optional<CrossingRoad> crossing_road(const MapBuild& build, std::int64_t way_id, const ingest::XY& point);
 
 // report.json's "opendrive" section.
 nlohmann::ordered_json map_report(const MapBuild& build, const MapInput& input);
