@@ -219,6 +219,10 @@ void PlayCommand::setup() {
     if (!fs::is_directory(opt_.scendir, ec)) {
         throw InputError(opt_.scendir, "no such scenario folder");
     }
+    if (!fs::is_regular_file(fs::path{opt_.scendir} / "manifest.json", ec)) {
+        throw InputError((fs::path{opt_.scendir} / "manifest.json").string(),
+                         "no scenario manifest (run `railodd scenarios` into this folder first)");
+    }
     const fs::path player = find_player(opt_.player);
     opt_.player = player.string();
     dat2csv_ = (player.parent_path() / "dat2csv").string();

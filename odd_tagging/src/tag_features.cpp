@@ -83,6 +83,7 @@ void add_crossing_road(const TagContext& ctx, const geometry::RoadRailCrossing& 
     }
     a.push_back({"crossing_road_id", road->road_id});
     a.push_back({"crossing_road_s", road->s});
+    a.push_back({"crossing_road_length", road->length});
     const std::pair<const char*, int> lanes[] = {{"crossing_road_forward_lane", road->forward_lane},
                                                  {"crossing_road_backward_lane", road->backward_lane},
                                                  {"crossing_road_forward_walk", road->forward_walk},

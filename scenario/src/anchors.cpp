@@ -12,6 +12,7 @@ namespace {
 
 constexpr const char* horizontal = "Scenery/Track geometry/Horizontal/";
 constexpr const char* speed_limit = "Operational Conditions/Speed/Speed limit";
+constexpr double min_overrun_m = 20.0; // past the anchor: the stop trigger's 5 m and a step of a fast train, with room
 constexpr double eps = 1e-6;
 
 bool under(const std::string& path, const std::string& element) {
@@ -71,6 +72,19 @@ double limit_at(const odd::OddProfile& p, const std::vector<std::size_t>& on_lin
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+// The run-up a template's timed hazards need: the train's front must start
+// further from each conflict point (the anchor, moved along_m) than the
+// distance the hazard is timed at.
+double hazard_run_up(const Template& t, double ego_half_length_m) {
+    double need = 0.0;
+    for (const auto& a : t.actors) {
+        if (a.move_to && a.hazard_before_m) {
+            need = std::max(need, *a.hazard_before_m + ego_half_length_m - a.along_m + 1.0);
+        }
+    }
+    return need;
+}
+
 } // namespace
 
 LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.along_route) {
@@ -120,7 +134,10 @@ std::optional<LanePlacement> LineIndex::at(std::size_t line, double chainage) co
     if (!p) {
         return std::nullopt;
     }
-    const double d = std::clamp(chainage - p->c0, 0.0, p->c1 - p->c0);
+    // A centimetre inside the piece: at a road's very end the written s can
+    // round past the road's length, which players truncate with an error.
+    const double len = p->c1 - p->c0, inside = std::min(0.01, 0.5 * len);
+    const double d = std::clamp(chainage - p->c0, inside, len - inside);
     LanePlacement out;
     out.road_id = p->road_id;
     out.lane_id = -1; // rail roads carry one rail lane, right of the reference line (docs/xodr.md)
@@ -177,7 +194,8 @@ bool matches(const odd::TaggedElement& e, const ElementMatch& match) {
     return true;
 }
 
-Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, const Template& t) {
+Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, const Template& t,
+                       double ego_half_length_m) {
     Anchoring out;
     LineElements by_line;
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
@@ -212,6 +230,25 @@ Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, c
             out.skipped.push_back({i, "only " + std::to_string(static_cast<long>(run_up)) +
                                           " m of track before the anchor, the template needs " +
                                           std::to_string(static_cast<long>(t.ego.min_run_up_m)) + " m"});
+            continue;
+        }
+        if (const double need = hazard_run_up(t, ego_half_length_m); run_up < need) {
+            out.skipped.push_back({i, "only " + std::to_string(static_cast<long>(run_up)) +
+                                          " m of track before the anchor, the hazard's timing (hazard_before_m) needs " +
+                                          std::to_string(static_cast<long>(std::ceil(need))) + " m"});
+            continue;
+        }
+        // The train must pass the anchor (and every actor placed after it)
+        // before its run ends: the stop trigger fires a few metres short of
+        // the end.
+        double past = min_overrun_m;
+        for (const auto& actor : t.actors) {
+            past = std::max(past, actor.along_m + min_overrun_m);
+        }
+        if (lines.end(a.line) - a.chainage < past) {
+            out.skipped.push_back({i, "only " + std::to_string(static_cast<long>(lines.end(a.line) - a.chainage)) +
+                                          " m of track after the anchor, the train needs " +
+                                          std::to_string(static_cast<long>(past)) + " m to run past it"});
             continue;
         }
         a.place = *place;

@@ -99,6 +99,28 @@ std::string scenario_id(const std::string& tmpl, std::size_t n) {
     return tmpl + buf;
 }
 
+// Half the longest train the template can run (its Ego asset parameter's
+// values, else the default asset of its class: instantiate.cpp's prepare).
+double ego_half_length(const Template& t, const Catalog& catalog) {
+    double longest = 0.0;
+    bool chosen = false;
+    for (const auto& p : t.parameters) {
+        if (p.kind == ParameterKind::actor_asset && p.actor == "Ego") {
+            chosen = true;
+            for (const auto& id : p.values) {
+                if (const Asset* a = catalog.find(id)) {
+                    longest = std::max(longest, a->dimensions.length);
+                }
+            }
+        }
+    }
+    if (!chosen) {
+        const auto assets = catalog.under(t.ego.asset_class);
+        longest = assets.empty() ? 0.0 : assets.front()->dimensions.length;
+    }
+    return longest / 2.0;
+}
+
 } // namespace
 
 Generation generate(const odd::OddProfile& profile, const TemplateSet& templates, const Catalog& catalog,
@@ -110,7 +132,7 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
     Generation out;
     std::set<std::string> used_assets;
     for (const Template& t : templates.templates) {
-        Anchoring anchoring = find_anchors(profile, lines, t);
+        Anchoring anchoring = find_anchors(profile, lines, t, ego_half_length(t, catalog));
         const std::vector<Anchor> anchors = thin(std::move(anchoring.anchors), options.max_anchors);
         TemplateContext ctx{profile, lines, t, catalog, taxonomy, options, anchors, {}};
         TemplateRun run;

@@ -114,8 +114,10 @@ double number_attribute(const TemplateContext& ctx, const Anchor& a, const char*
 // (sampled every 2 m, so the path follows the road) to the point where the
 // road meets the track. A pedestrian takes the road's sidewalk where it has
 // one. The lane travelling in +s is taken where there is room before the
-// crossing; else the one travelling in -s. Nothing where the profile names
-// no crossing road (a crossing inside a road junction).
+// crossing, else the one travelling in -s; where neither has the room (a
+// road cut back short for a junction), the one with more, from a centimetre
+// inside the road's end. Nothing where the profile names no crossing road
+// (a crossing inside a road junction).
 std::optional<std::vector<LanePlacement>> crossing_road_path(const TemplateContext& ctx, const Anchor& a,
                                                              bool pedestrian) {
     const auto* id = ctx.profile.elements[a.element].find("crossing_road_id");
@@ -123,19 +125,23 @@ std::optional<std::vector<LanePlacement>> crossing_road_path(const TemplateConte
         return std::nullopt;
     }
     const double s_cross = number_attribute(ctx, a, "crossing_road_s");
+    const double length = number_attribute(ctx, a, "crossing_road_length");
     const int fwd = static_cast<int>(number_attribute(ctx, a, pedestrian ? "crossing_road_forward_walk" : "crossing_road_forward_lane"));
     const int bwd = static_cast<int>(number_attribute(ctx, a, pedestrian ? "crossing_road_backward_walk" : "crossing_road_backward_lane"));
     if (pedestrian && fwd == 0 && bwd == 0) {
         return crossing_road_path(ctx, a, false);
     }
-    const bool forward = fwd != 0 && (s_cross >= crossing_approach_m || bwd == 0);
-    if (!forward && bwd == 0) {
+    constexpr double inside = 0.01;
+    const double room_fwd = fwd != 0 ? s_cross - inside : -1.0;
+    const double room_bwd = bwd != 0 && length > 0.0 ? length - inside - s_cross : -1.0;
+    const bool forward = room_fwd >= crossing_approach_m || (room_bwd < crossing_approach_m && room_fwd >= room_bwd);
+    const double room = std::min(crossing_approach_m, forward ? room_fwd : room_bwd);
+    if (room < 1.0) {
         return std::nullopt;
     }
-    const double dir = forward ? 1.0 : -1.0;
-    const double s0 = std::max(0.0, s_cross - dir * crossing_approach_m);
+    const double s0 = forward ? s_cross - room : s_cross + room;
     std::vector<LanePlacement> path;
-    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(s_cross - s0) / 2.0)));
+    const int steps = std::max(1, static_cast<int>(std::ceil(room / 2.0)));
     for (int i = 0; i <= steps; ++i) {
         LanePlacement p;
         p.road_id = std::get<std::string>(*id);
@@ -192,18 +198,28 @@ double path_length(const std::vector<LanePlacement>& path) {
     return len;
 }
 
-// The ego's travelled distance at which an actor's move starts. With
-// hazard_before_m, timed from the ego's speed and the actor's path so that
-// the actor reaches its target when the ego's front is that far short of
-// the conflict point (the anchor, moved along_m); where the run-up is too
-// short for that, at once.
-double move_trigger(const ActorTemplate& t, const Actor& actor, const Anchor& a, const Actor& ego) {
-    const double run_up = a.chainage + t.along_m - a.start_chainage;
+// When an actor's move starts: the ego's travelled distance, and how long
+// the ego must first stand. With hazard_before_m the move is timed from the
+// ego's speed and the actor's path so that the actor reaches its target when
+// the ego's front is that far short of the conflict point (the anchor, moved
+// along_m); where the run-up is too short for that, the move starts at once
+// and the ego sets off late by the time it lacks.
+struct MoveStart {
+    double ego_distance_m = 0.0;
+    double ego_delay_s = 0.0;
+};
+
+MoveStart move_start(const ActorTemplate& t, const Actor& actor, const Anchor& a, const Actor& ego) {
     if (!t.hazard_before_m) {
-        return std::max(0.0, a.chainage - a.start_chainage - t.trigger_before_m);
+        return {std::max(0.0, a.chainage - a.start_chainage - t.trigger_before_m), 0.0};
     }
+    const double run_up = a.chainage + t.along_m - a.start_chainage;
     const double move_s = path_length(actor.path) / std::max(actor.target_speed_mps, 0.1);
-    return std::max(0.0, run_up - *t.hazard_before_m - ego.dimensions.length / 2.0 - ego.speed_mps * move_s);
+    const double at = run_up - *t.hazard_before_m - ego.dimensions.length / 2.0 - ego.speed_mps * move_s;
+    if (at >= 0.0) {
+        return {at, 0.0};
+    }
+    return {0.0, -at / std::max(ego.speed_mps, 0.1)};
 }
 
 } // namespace
@@ -299,10 +315,13 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
         rec.assets.emplace_back(t.name, asset.id);
         cover_asset(ctx, asset, rec.odd_elements);
         if (t.move_to) {
-            trigger = std::min(trigger, move_trigger(t, sc.others.back(), a, sc.ego));
+            const MoveStart m = move_start(t, sc.others.back(), a, sc.ego);
+            trigger = std::min(trigger, m.ego_distance_m);
+            sc.ego_start_delay_s = std::max(sc.ego_start_delay_s, m.ego_delay_s);
         }
     }
     sc.trigger_distance_m = std::isfinite(trigger) ? trigger : 0.0;
+    sc.stop_time_s += std::ceil(sc.ego_start_delay_s);
     const auto& map = ctx.anchor_cover[row[0]];
     rec.odd_elements.insert(rec.odd_elements.end(), map.begin(), map.end());
     fill_parameters(ctx, row, speed, rec);

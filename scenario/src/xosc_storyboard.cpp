@@ -58,7 +58,10 @@ void init_actor(pugi::xml_node actions, const Actor& a, bool is_ego, const Conte
     // The ego always gets a speed (the parameter EgoSpeed drives it); the
     // others only when they move from the start.
     if (is_ego) {
-        speed_action(priv.append_child("PrivateAction"), cx.value(parameter_names::ego_speed, a.speed_mps));
+        // A late start stands first (ego_departs sets it off).
+        speed_action(priv.append_child("PrivateAction"), cx.scenario().ego_start_delay_s > 0.0
+                                                             ? "0"
+                                                             : cx.value(parameter_names::ego_speed, a.speed_mps));
     } else if (a.speed_mps > 0.0) {
         speed_action(priv.append_child("PrivateAction"), num(a.speed_mps));
     }
@@ -109,7 +112,7 @@ void follow_path(pugi::xml_node event, const Actor& a) {
         path = {a.start, *a.target};
     }
     for (const auto& p : path) {
-        position(polyline.append_child("Vertex"), p);
+        position(polyline.append_child("Vertex"), p, false);
     }
     follow.append_child("TimeReference").append_child("None");
     attr(follow.append_child("TrajectoryFollowingMode"), "followingMode", "position");
@@ -156,6 +159,29 @@ void actor_maneuver_group(pugi::xml_node act, const Actor& a, const Context& cx)
     attr(done, "state", "endTransition");
 }
 
+// The ego's departure after ego_start_delay_s, where the actors need the
+// time (instantiate.cpp, move_start).
+void ego_departs(pugi::xml_node act, const Context& cx) {
+    const Actor& ego = cx.scenario().ego;
+    pugi::xml_node group = act.append_child("ManeuverGroup");
+    attr(group, "maximumExecutionCount", 1);
+    attr(group, "name", ego.name + "Group");
+    pugi::xml_node actors = group.append_child("Actors");
+    attr(actors, "selectTriggeringEntities", "false");
+    attr(actors.append_child("EntityRef"), "entityRef", ego.name);
+    pugi::xml_node maneuver = group.append_child("Maneuver");
+    attr(maneuver, "name", ego.name + "Maneuver");
+    pugi::xml_node event = maneuver.append_child("Event");
+    attr(event, "name", ego.name + "Departs");
+    attr(event, "priority", cx.rev_minor() < 2 ? "overwrite" : "override");
+    attr(event, "maximumExecutionCount", 1);
+    pugi::xml_node go = event.append_child("Action");
+    attr(go, "name", ego.name + "Speed");
+    speed_action(go.append_child("PrivateAction"), cx.value(parameter_names::ego_speed, ego.speed_mps));
+    simulation_time_condition(event.append_child("StartTrigger").append_child("ConditionGroup"), "EgoDelay",
+                              "greaterThan", cx.scenario().ego_start_delay_s);
+}
+
 } // namespace
 
 void write_init(pugi::xml_node storyboard, const Context& cx) {
@@ -173,7 +199,10 @@ void write_story(pugi::xml_node storyboard, const Context& cx) {
     attr(story, "name", sc.id.empty() ? std::string{"Story"} : sc.id);
     pugi::xml_node act = story.append_child("Act");
     attr(act, "name", "Act");
-    bool any = false;
+    bool any = sc.ego_start_delay_s > 0.0;
+    if (any) {
+        ego_departs(act, cx);
+    }
     for (const auto& a : sc.others) {
         if (a.target) {
             actor_maneuver_group(act, a, cx);

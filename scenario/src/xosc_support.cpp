@@ -109,20 +109,27 @@ std::string Context::value(std::string_view name, const std::string& literal) co
     return ref;
 }
 
-void lane_position(pugi::xml_node parent, const LanePlacement& p) {
+void lane_position(pugi::xml_node parent, const LanePlacement& p, bool orientation) {
     pugi::xml_node lp = parent.append_child("LanePosition");
     attr(lp, "roadId", p.road_id);
     attr(lp, "laneId", p.lane_id);
     attr(lp, "offset", p.offset);
     attr(lp, "s", p.s);
-    // Always explicit, so that a tool's default (road or lane direction) never
-    // decides which way the actor faces.
+    // Explicit, so that a tool's default (road or lane direction) never
+    // decides which way the actor faces; but not on a trajectory's vertices,
+    // where the path's direction is the heading (esmini 3.6 ends at once a
+    // path whose vertices face against the road).
+    if (!orientation) {
+        return;
+    }
     pugi::xml_node o = lp.append_child("Orientation");
     attr(o, "type", "relative");
     attr(o, "h", std::remainder((p.reversed ? std::numbers::pi : 0.0) + p.heading, 2.0 * std::numbers::pi));
 }
 
-void position(pugi::xml_node parent, const LanePlacement& p) { lane_position(parent.append_child("Position"), p); }
+void position(pugi::xml_node parent, const LanePlacement& p, bool orientation) {
+    lane_position(parent.append_child("Position"), p, orientation);
+}
 
 void speed_action(pugi::xml_node parent, const std::string& speed) {
     pugi::xml_node sa = parent.append_child("LongitudinalAction").append_child("SpeedAction");

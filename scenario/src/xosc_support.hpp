@@ -60,9 +60,9 @@ private:
 };
 
 // <LanePosition> (with its Orientation) as the child of `parent`.
-void lane_position(pugi::xml_node parent, const LanePlacement& p);
+void lane_position(pugi::xml_node parent, const LanePlacement& p, bool orientation = true);
 // <Position><LanePosition/></Position> as the child of `parent`.
-void position(pugi::xml_node parent, const LanePlacement& p);
+void position(pugi::xml_node parent, const LanePlacement& p, bool orientation = true);
 
 // <PrivateAction><LongitudinalAction><SpeedAction> to `speed` (a number or
 // "$Param") with step dynamics.

@@ -150,6 +150,7 @@ std::optional<CrossingRoad> crossing_road(const MapBuild& build, std::int64_t wa
     CrossingRoad c;
     c.road_id = road.id;
     c.s = hit.s;
+    c.length = road.length();
     c.forward_lane = innermost(fwd, "driving");
     c.backward_lane = innermost(bwd, "driving");
     c.forward_walk = innermost(fwd, "sidewalk");

@@ -69,8 +69,11 @@ bool matches(const odd::TaggedElement& e, const ElementMatch& match);
 
 // Every place on the profile where the template's anchor and context
 // requirements hold, the ego travelling in the direction of growing chainage.
-// Anchors with less than the template's minimum run-up before them are skipped
-// with the reason.
-Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, const Template& t);
+// Anchors with less than the template's minimum run-up before them, with too
+// little track before them for an actor's hazard_before_m (the train's front,
+// `ego_half_length_m` ahead of its reference point, must start further off),
+// or too little after them to run past are skipped with the reason.
+Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, const Template& t,
+                       double ego_half_length_m = 0.0);
 
 } // namespace railodd::scenario

@@ -100,6 +100,10 @@ struct ConcreteScenario {
     Environment environment;
     // The others' motions start when the ego has travelled this far from its start.
     double trigger_distance_m = 0.0;
+    // The ego stands this long before it sets off: where the track before the
+    // anchor is too short for the actors' moves to be timed by the ego's
+    // distance alone (ActorTemplate::hazard_before_m).
+    double ego_start_delay_s = 0.0;
     double stop_time_s = 60.0; // simulation stops at this time ...
     std::optional<LanePlacement> ego_end; // ... or when the ego reaches this place
 };

@@ -70,6 +70,7 @@ MapBuild build_map(const MapInput& input, const MapOptions& options);
 struct CrossingRoad {
     std::string road_id;
     double s = 0.0;           // the crossing point's s on the road
+    double length = 0.0;      // the road's length
     int forward_lane = 0;     // driving lane travelling in +s (0: none)
     int backward_lane = 0;    // driving lane travelling in -s (0: none)
     int forward_walk = 0;     // sidewalk lane on the forward side (0: none)

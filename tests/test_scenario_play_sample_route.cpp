@@ -1,0 +1,132 @@
+// Golden end to end, in a real OpenSCENARIO player: the sample route
+// converted, its whole scenario set generated and played in esmini
+// (../shared/tools/esmini), every scenario passing every check; a real
+// extract's seeded random sample the same; a scenario the player cannot load
+// failing alone with exit 5; bad input refused.
+#include "test_support.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+using namespace railodd::test;
+using json = nlohmann::json;
+
+namespace {
+
+fs::path esmini() {
+    const fs::path data = shared_data();
+    const fs::path p = data.empty() ? fs::path{} : data.parent_path() / "tools" / "esmini" / "bin" / "esmini";
+    return !p.empty() && fs::exists(p) ? p : fs::path{};
+}
+
+#define REQUIRE_PLAYER()                                                                                   \
+    if (esmini().empty()) {                                                                               \
+        GTEST_SKIP() << "../shared/tools/esmini is absent (set RAILODD_SHARED_DATA): skipping player test"; \
+    }
+
+CommandResult run_railodd(const std::string& args) { return run_command(std::string{RAILODD_BIN} + " " + args); }
+
+json read_json(const fs::path& p) { return json::parse(read_file(p)); }
+
+std::string play_args(const fs::path& dir) { return "play " + quoted(dir) + " --quiet --jobs 2 --player " + quoted(esmini()); }
+
+// Every scenario ran and passed; the failures listed where not.
+void expect_all_pass(const json& play) {
+    for (const auto& s : play["scenarios"]) {
+        EXPECT_TRUE(s["passed"].get<bool>()) << s.dump(1);
+    }
+    EXPECT_EQ(play["summary"]["passed"], play["summary"]["scenarios"]);
+}
+
+class ScenarioPlaySampleRoute : public ::testing::Test {
+protected:
+    static fs::path root() {
+        return fs::temp_directory_path() / "railodd-tests" / ("ScenarioPlaySampleRoute-" + std::to_string(::getpid()));
+    }
+    static void TearDownTestSuite() { fs::remove_all(root()); }
+    static void SetUpTestSuite() {
+        fs::remove_all(root());
+        fs::create_directories(root());
+        ASSERT_EQ(run_railodd("sample -o " + quoted(root() / "sample")).exit_code, 0);
+        const auto c = run_railodd("convert " + quoted(root() / "sample" / "sample_route.osm") + " -o " + quoted(root() / "map") +
+                               " --dem " + quoted(root() / "sample" / "sample_route_dem.tif") +
+                               " --node-noise 0.3 --estimate-cant --no-timings");
+        ASSERT_EQ(c.exit_code, 0) << c.output;
+    }
+};
+
+} // namespace
+
+TEST_F(ScenarioPlaySampleRoute, EveryScenarioPlaysAsIntended) {
+    REQUIRE_PLAYER();
+    const fs::path set = root() / "all";
+    ASSERT_EQ(run_railodd("scenarios --map " + quoted(root() / "map") + " -o " + quoted(set) + " -q").exit_code, 0);
+    const auto r = run_railodd(play_args(set));
+    EXPECT_EQ(r.exit_code, 0) << r.output << read_file(set / "play.txt");
+    const json play = read_json(set / "play.json");
+    const json manifest = read_json(set / "manifest.json");
+    ASSERT_EQ(play["scenarios"].size(), manifest["scenarios"].size());
+    ASSERT_GE(play["scenarios"].size(), 50u);
+    expect_all_pass(play);
+    // Each template's hazard happens (those that put one on the track), and
+    // the figures are there: the criticality classes split the set.
+    int can = 0, cannot = 0;
+    for (const auto& s : play["scenarios"]) {
+        (s["criticality"]["can_stop"].get<bool>() ? can : cannot)++;
+        EXPECT_GT(s["criticality"]["stopping_distance_m"].get<double>(), 0.0);
+        EXPECT_TRUE(fs::exists(set / "play" / (s["id"].get<std::string>() + ".csv")));
+    }
+    EXPECT_GT(can, 0);
+    EXPECT_GT(cannot, 0);
+}
+
+TEST_F(ScenarioPlaySampleRoute, AScenarioThePlayerCannotLoadFailsAlone) {
+    REQUIRE_PLAYER();
+    const fs::path set = root() / "broken";
+    ASSERT_EQ(run_railodd("scenarios --map " + quoted(root() / "map") + " -o " + quoted(set) +
+                      " -q --strategy random --count 1 --seed 2")
+                  .exit_code,
+              0);
+    const json manifest = read_json(set / "manifest.json");
+    const std::string broken = manifest["scenarios"][0]["id"];
+    write_file(set / (broken + ".xosc"), "<OpenSCENARIO><FileHeader");
+    const auto r = run_railodd(play_args(set));
+    EXPECT_EQ(r.exit_code, 5) << r.output;
+    const json play = read_json(set / "play.json");
+    EXPECT_EQ(play["summary"]["failed"], 1);
+    for (const auto& s : play["scenarios"]) {
+        EXPECT_EQ(s["passed"].get<bool>(), s["id"] != broken) << s.dump(1);
+    }
+}
+
+TEST_F(ScenarioPlaySampleRoute, BadInputIsRefused) {
+    const fs::path empty = root() / "empty";
+    fs::create_directories(empty);
+    const auto no_manifest = run_railodd("play " + quoted(empty) + " --player /bin/true");
+    EXPECT_EQ(no_manifest.exit_code, 2) << no_manifest.output;
+    EXPECT_NE(no_manifest.output.find("manifest.json"), std::string::npos) << no_manifest.output;
+    write_file(empty / "manifest.json", R"({"scenarios": []})");
+    const auto no_player = run_railodd("play " + quoted(empty) + " --player " + quoted(root() / "nothing"));
+    EXPECT_EQ(no_player.exit_code, 2) << no_player.output;
+    EXPECT_NE(no_player.output.find("nothing"), std::string::npos) << no_player.output;
+    EXPECT_FALSE(fs::exists(empty / "play.json"));
+}
+
+// A real extract: a seeded random sample of scenarios on the shared data.
+TEST(ScenarioPlaySharedExtract, ARandomSampleOfLiechtensteinPlays) {
+    RAILODD_REQUIRE_SHARED_DATA();
+    REQUIRE_PLAYER();
+    const fs::path dir = scratch_dir();
+    const auto c = run_railodd("convert " + quoted(shared_data() / "osm" / "valhalla_liechtenstein-latest.osm.pbf") + " -o " +
+                           quoted(dir / "map") + " --no-timings");
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    const auto s = run_railodd("scenarios --map " + quoted(dir / "map") + " -o " + quoted(dir / "set") +
+                           " -q --strategy random --count 5 --seed 11");
+    ASSERT_EQ(s.exit_code, 0) << s.output;
+    const auto r = run_railodd(play_args(dir / "set"));
+    EXPECT_EQ(r.exit_code, 0) << r.output << read_file(dir / "set" / "play.txt");
+    const json play = read_json(dir / "set" / "play.json");
+    EXPECT_GE(play["scenarios"].size(), 20u);
+    expect_all_pass(play);
+}
