@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -196,6 +197,41 @@ std::string text_report(const ojson& report) {
     return t.str();
 }
 
+// The manifest gains each scenario's play outcome and criticality, and
+// coverage.json the criticality classes (can stop / cannot) per template and
+// overall: the traceability record says what each scenario turned out to be.
+void record_criticality(OutputStage& stage, const fs::path& dir, ojson manifest, const ojson& report) {
+    std::map<std::string, std::pair<int, int>> per_template; // can stop, cannot
+    int can = 0, cannot = 0;
+    for (std::size_t i = 0; i < report["scenarios"].size(); ++i) {
+        const ojson& r = report["scenarios"][i];
+        ojson& m = manifest["scenarios"][i];
+        m["play"] = {{"passed", r["passed"]}};
+        if (!r.contains("criticality")) {
+            continue;
+        }
+        m["play"]["criticality"] = r["criticality"];
+        const bool stops = r["criticality"]["can_stop"].get<bool>();
+        auto& t = per_template[m.value("template", "")];
+        (stops ? t.first : t.second)++;
+        (stops ? can : cannot)++;
+    }
+    stage.write_text("manifest.json", manifest.dump(1) + "\n");
+    std::ifstream in(dir / "coverage.json", std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    ojson coverage = ojson::parse(text.str(), nullptr, false);
+    if (!coverage.is_object()) {
+        return; // no coverage of this set to add to
+    }
+    ojson templates = ojson::object();
+    for (const auto& [id, n] : per_template) {
+        templates[id] = {{"can_stop", n.first}, {"cannot_stop", n.second}};
+    }
+    coverage["criticality"] = {{"can_stop", can}, {"cannot_stop", cannot}, {"templates", std::move(templates)}};
+    stage.write_text("coverage.json", coverage.dump(1) + "\n");
+}
+
 } // namespace
 
 CLI::App* PlayCommand::add(CLI::App& parent) {
@@ -283,6 +319,7 @@ int PlayCommand::run() {
     const int total = static_cast<int>(tasks.size());
     report["summary"] = {{"scenarios", total}, {"passed", passed}, {"failed", total - passed}, {"can_stop", can_stop}};
     report["scenarios"] = std::move(entries);
+    record_criticality(stage, dir, manifest, report);
     stage.write_text("play.json", report.dump(2) + "\n");
     const std::string text = text_report(report);
     stage.write_text("play.txt", text);

@@ -78,7 +78,7 @@ nlohmann::json old_manifest(const fs::path& file) {
 }
 
 // The files an earlier run's manifest lists: its scenarios, behaviours and
-// distributions. Those this run does not write again are removed in its
+// distributions, and what `railodd play` wrote of them. Those this run does not write again are removed in its
 // commit; only names railodd itself writes there are taken, whatever the old
 // manifest says.
 std::vector<std::string> earlier_files(const nlohmann::json& old) {
@@ -105,7 +105,17 @@ std::vector<std::string> earlier_files(const nlohmann::json& old) {
             take(e, "file", nullptr, ".xosc");
             take(e, "behavior", nullptr, ".behavior.yaml");
             take(e, "distribution", "distributions/", ".xosc");
+            // `railodd play`'s recordings of the earlier set: stale now.
+            if (list == std::string_view{"scenarios"} && e.is_object() && e.contains("id") && e["id"].is_string() &&
+                is_safe_name(e["id"].get<std::string>())) {
+                out.push_back("play/" + e["id"].get<std::string>() + ".csv");
+                out.push_back("play/" + e["id"].get<std::string>() + ".log");
+            }
         }
+    }
+    if (!out.empty()) {
+        out.push_back("play.json");
+        out.push_back("play.txt");
     }
     return out;
 }

@@ -79,6 +79,15 @@ TEST_F(ScenarioPlaySampleRoute, EveryScenarioPlaysAsIntended) {
     }
     EXPECT_GT(can, 0);
     EXPECT_GT(cannot, 0);
+    // The manifest and coverage.json record it; a new set into the folder
+    // removes the old set's play outputs.
+    const json coverage = read_json(set / "coverage.json");
+    EXPECT_EQ(coverage["criticality"]["can_stop"], can);
+    EXPECT_EQ(coverage["criticality"]["cannot_stop"], cannot);
+    EXPECT_TRUE(read_json(set / "manifest.json")["scenarios"][0]["play"]["passed"].get<bool>());
+    ASSERT_EQ(run_railodd("scenarios --map " + quoted(root() / "map") + " -o " + quoted(set) + " -q").exit_code, 0);
+    EXPECT_FALSE(fs::exists(set / "play.json"));
+    EXPECT_FALSE(fs::exists(set / "play" / (play["scenarios"][0]["id"].get<std::string>() + ".csv")));
 }
 
 TEST_F(ScenarioPlaySampleRoute, AScenarioThePlayerCannotLoadFailsAlone) {
