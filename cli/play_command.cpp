@@ -138,11 +138,12 @@ struct Played {
     ojson entry;
     bool passed = false;
     bool can_stop = false;
+    std::string svg; // with --plot
 };
 
 // One scenario's record: ran or not, the checks on its recording, the figures.
 Played analyse_one(const ojson& sc, const TaskOutcome& outcome, const fs::path& csv, const fs::path& log,
-                   const play::Options& o) {
+                   const play::Options& o, const std::vector<play::LaneLine>* lanes) {
     Played p;
     p.entry = {{"id", sc["id"]}, {"template", sc.value("template", "")}, {"ran", outcome.ok}};
     if (!outcome.ok) {
@@ -155,7 +156,11 @@ Played analyse_one(const ojson& sc, const TaskOutcome& outcome, const fs::path& 
     const play::PlayerLog pl = play::read_player_log(log_in);
     std::ifstream csv_in(csv);
     const play::Trajectories tr = play::read_trajectories(csv_in, csv.string());
-    const play::Analysis a = play::analyse(nlohmann::json::parse(sc.dump()), tr, pl, o);
+    const nlohmann::json scenario = nlohmann::json::parse(sc.dump());
+    const play::Analysis a = play::analyse(scenario, tr, pl, o);
+    if (lanes) {
+        p.svg = play::plot_svg(scenario, tr, *lanes, a);
+    }
     ojson checks = ojson::array();
     for (const auto& c : a.checks) {
         checks.push_back({{"check", c.name}, {"passed", c.passed}, {"detail", c.detail}});
@@ -232,6 +237,30 @@ void record_criticality(OutputStage& stage, const fs::path& dir, ojson manifest,
     stage.write_text("coverage.json", coverage.dump(1) + "\n");
 }
 
+// The map's lanes as the player reads them: esmini's odrplot, beside the
+// player, on the set's map (the first scenario's, relative to SCENDIR).
+std::vector<play::LaneLine> map_lanes(const ojson& manifest, const fs::path& dir, const fs::path& scratch,
+                                      const std::string& player) {
+    if (manifest["scenarios"].empty()) {
+        return {};
+    }
+    const fs::path map = dir / manifest["scenarios"][0].value("map", "");
+    const fs::path odrplot = fs::path{player}.parent_path() / "odrplot", csv = scratch / "lanes.csv";
+    if (!executable(odrplot)) {
+        throw InputError(odrplot.string(), "no odrplot beside the player (esmini's map plotter), needed by --plot");
+    }
+    std::vector<BatchTask> task{{"lanes", {{"odrplot", {map.string(), csv.string(), "1.0"}, scratch / "odrplot.log", scratch,
+                                            odrplot.string()}}}};
+    BatchProgress quiet(1, 1, false, "maps");
+    TaskOutcome outcome;
+    run_tasks(task, 1, quiet, [&](std::size_t, const TaskOutcome& o) { outcome = o; });
+    std::ifstream in(csv);
+    if (!outcome.ok || !in) {
+        throw InputError(map.string(), "odrplot could not plot the map: " + outcome.error);
+    }
+    return play::read_lane_lines(in);
+}
+
 } // namespace
 
 CLI::App* PlayCommand::add(CLI::App& parent) {
@@ -246,6 +275,7 @@ CLI::App* PlayCommand::add(CLI::App& parent) {
     app->add_option("--reaction-time", opt_.reaction_time_s,
                     "Time from seeing the hazard to full braking, for the stopping distance (s)")
         ->check(CLI::Range(0.0, 10.0));
+    app->add_flag("--plot", opt_.plot, "Also draw each run as play/ID.svg: lanes (esmini odrplot), paths, train and actors at the hazard");
     app->add_flag("--quiet", opt_.quiet, "No progress lines");
     return app;
 }
@@ -301,6 +331,7 @@ int PlayCommand::run() {
 
     play::Options po;
     po.reaction_time_s = opt_.reaction_time_s;
+    const std::vector<play::LaneLine> lanes = opt_.plot ? map_lanes(manifest, dir, scratch.dir, opt_.player) : std::vector<play::LaneLine>{};
     ojson report;
     report["railodd"] = {{"format", "play_report"}, {"format_version", 1}};
     report["player"] = {{"path", opt_.player}, {"version", tasks.empty() ? "" : player_version(tasks[0].steps[0].log)}};
@@ -311,7 +342,11 @@ int PlayCommand::run() {
     int passed = 0, can_stop = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const auto& sc = manifest["scenarios"][i];
-        Played p = analyse_one(sc, outcomes[i], tasks[i].steps[1].args[6], tasks[i].steps[0].log, po);
+        Played p = analyse_one(sc, outcomes[i], tasks[i].steps[1].args[6], tasks[i].steps[0].log, po,
+                               opt_.plot ? &lanes : nullptr);
+        if (!p.svg.empty()) {
+            stage.write_text("play/" + sc["id"].get<std::string>() + ".svg", p.svg);
+        }
         passed += p.passed;
         can_stop += p.can_stop;
         entries.push_back(std::move(p.entry));

@@ -15,6 +15,7 @@ struct PlayOptions {
     unsigned jobs = 0;         // 0: one per hardware thread
     double timestep_s = 0.05;
     double reaction_time_s = 1.0;
+    bool plot = false;         // play/ID.svg per scenario
     bool quiet = false;
 };
 

@@ -100,12 +100,18 @@ TEST_F(ScenarioPlaySampleRoute, AScenarioThePlayerCannotLoadFailsAlone) {
     const json manifest = read_json(set / "manifest.json");
     const std::string broken = manifest["scenarios"][0]["id"];
     write_file(set / (broken + ".xosc"), "<OpenSCENARIO><FileHeader");
-    const auto r = run_railodd(play_args(set));
+    const auto r = run_railodd(play_args(set) + " --plot");
     EXPECT_EQ(r.exit_code, 5) << r.output;
     const json play = read_json(set / "play.json");
     EXPECT_EQ(play["summary"]["failed"], 1);
     for (const auto& s : play["scenarios"]) {
         EXPECT_EQ(s["passed"].get<bool>(), s["id"] != broken) << s.dump(1);
+        // --plot: each run that played is drawn, with the map's lanes.
+        const fs::path svg = set / "play" / (s["id"].get<std::string>() + ".svg");
+        EXPECT_EQ(fs::exists(svg), s["id"] != broken) << svg;
+        if (s["id"] != broken) {
+            EXPECT_NE(read_file(svg).find("<polyline"), std::string::npos);
+        }
     }
 }
 

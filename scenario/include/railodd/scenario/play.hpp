@@ -6,6 +6,7 @@
 // the player's own output, not from railodd's model of the map.
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <istream>
 #include <map>
 #include <optional>
@@ -82,5 +83,18 @@ struct Analysis {
 
 // `scenario`: the scenario's entry of manifest.json.
 Analysis analyse(const nlohmann::json& scenario, const Trajectories& run, const PlayerLog& log, const Options& o);
+
+// The map's lanes as esmini's odrplot writes them ("lane, ROAD, SECTION,
+// LANE, TYPE" then "x, y, z, h" rows).
+struct LaneLine {
+    bool driving = false;
+    std::vector<std::array<double, 2>> points;
+};
+std::vector<LaneLine> read_lane_lines(std::istream& in);
+
+// The run as an SVG picture: lanes, recorded paths, train and actors at the
+// hazard's onset; the whole run and the 160 m around the hazard.
+std::string plot_svg(const nlohmann::json& scenario, const Trajectories& run, const std::vector<LaneLine>& lanes,
+                     const Analysis& analysis);
 
 } // namespace railodd::scenario::play
