@@ -90,6 +90,28 @@ TEST_F(ScenarioPlaySampleRoute, EveryScenarioPlaysAsIntended) {
     EXPECT_FALSE(fs::exists(set / "play" / (play["scenarios"][0]["id"].get<std::string>() + ".csv")));
 }
 
+// A route profile (--from/--to) runs the train through a switch: its route
+// crosses the switch's junction road, and it stays on its rail lane there.
+TEST_F(ScenarioPlaySampleRoute, ATrainRoutedThroughASwitchStaysOnItsLane) {
+    REQUIRE_PLAYER();
+    const fs::path map = root() / "route", set = root() / "route_set";
+    const auto c = run_railodd("convert " + quoted(root() / "sample" / "sample_route.osm") + " -o " + quoted(map) +
+                               " --node-noise 0.3 --from Brookside --to Sampleton --no-timings");
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    ASSERT_EQ(run_railodd("scenarios --map " + quoted(map) + " -o " + quoted(set) + " -q --strategy random --count 1 --seed 1")
+                  .exit_code,
+              0);
+    const auto r = run_railodd(play_args(set));
+    EXPECT_EQ(r.exit_code, 0) << r.output << read_file(set / "play.txt");
+    const json play = read_json(set / "play.json"), manifest = read_json(set / "manifest.json");
+    expect_all_pass(play);
+    std::size_t longest = 0;
+    for (const auto& s : manifest["scenarios"]) {
+        longest = std::max(longest, s["ego"]["route_roads"].size());
+    }
+    EXPECT_GE(longest, 3u) << "no scenario's route passes a switch";
+}
+
 TEST_F(ScenarioPlaySampleRoute, AScenarioThePlayerCannotLoadFailsAlone) {
     REQUIRE_PLAYER();
     const fs::path set = root() / "broken";
