@@ -148,6 +148,14 @@ TEST_F(ScenarioPlaySampleRoute, BadInputIsRefused) {
     EXPECT_EQ(no_player.exit_code, 2) << no_player.output;
     EXPECT_NE(no_player.output.find("nothing"), std::string::npos) << no_player.output;
     EXPECT_FALSE(fs::exists(empty / "play.json"));
+    // A manifest whose scenario id is a path, not a file name.
+    write_file(empty / "manifest.json", R"({"scenarios": [{"id": "../escape", "ego": {}, "actors": []}]})");
+    const auto escape = run_railodd("play " + quoted(empty) + " --player " + quoted(esmini().empty() ? fs::path{"/bin/true"} : esmini()));
+    if (!esmini().empty()) {
+        EXPECT_EQ(escape.exit_code, 2) << escape.output;
+        EXPECT_NE(escape.output.find("../escape"), std::string::npos) << escape.output;
+    }
+    EXPECT_FALSE(fs::exists(root() / "escape.log"));
 }
 
 // A real extract: a seeded random sample of scenarios on the shared data.
