@@ -11,8 +11,14 @@ bash scripts/build.sh
 ./build/railodd validate out/sample_route/map.xodr --netconvert
 ./build/railodd profile out/sample_route --odd-spec data/odd/example_odd_spec.yaml || [ $? -eq 5 ] # exit 5: outside the ODD (the industrial spur)
 ./build/railodd scenarios --map out/sample_route -o out/scenarios --odd-spec data/odd/example_odd_spec.yaml --quiet
+# Play them where an OpenSCENARIO player (esmini) is at hand: ../shared/tools or the PATH.
+if [ -x ../shared/tools/esmini/bin/esmini ] || command -v esmini >/dev/null || [ -n "${RAILODD_ESMINI:-}" ]; then
+  ./build/railodd play out/scenarios --plot --quiet
+else
+  echo "no esmini: scenarios not played (railodd play --player PATH)"
+fi
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
 echo "  conversion (map.xodr, odd_profile.json/.geojson/.csv, report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
-echo "  scenarios (ID.xosc, ID.behavior.yaml, catalogs/, distributions/, manifest.json, coverage.json/.txt): $(pwd)/out/scenarios/"
+echo "  scenarios (ID.xosc, ID.behavior.yaml, catalogs/, distributions/, manifest.json, coverage.json/.txt; play.json/.txt, play/ when played): $(pwd)/out/scenarios/"
