@@ -306,6 +306,7 @@ int PlayCommand::run() {
     OutputStage stage(dir);
     const Scratch scratch;
     std::vector<BatchTask> tasks;
+    std::vector<fs::path> recordings; // play/ID.csv per task
     const std::string step = std::to_string(opt_.timestep_s);
     for (const auto& sc : manifest["scenarios"]) {
         const std::string id = sc["id"];
@@ -318,6 +319,7 @@ int PlayCommand::run() {
         t.steps.push_back({"dat2csv", {"--file", dat.string(), "--extended", "--precision", "6", "--csv", csv.string()},
                            scratch.dir / (id + ".dat2csv.log"), scratch.dir, dat2csv_});
         tasks.push_back(std::move(t));
+        recordings.push_back(csv);
     }
     std::vector<TaskOutcome> outcomes(tasks.size());
     BatchProgress progress(tasks.size(), opt_.jobs, !opt_.quiet && ::isatty(STDERR_FILENO) == 1, "scenarios");
@@ -342,7 +344,7 @@ int PlayCommand::run() {
     int passed = 0, can_stop = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const auto& sc = manifest["scenarios"][i];
-        Played p = analyse_one(sc, outcomes[i], tasks[i].steps[1].args[6], tasks[i].steps[0].log, po,
+        Played p = analyse_one(sc, outcomes[i], recordings[i], tasks[i].steps[0].log, po,
                                opt_.plot ? &lanes : nullptr);
         if (!p.svg.empty()) {
             stage.write_text("play/" + sc["id"].get<std::string>() + ".svg", p.svg);
