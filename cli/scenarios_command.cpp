@@ -132,7 +132,7 @@ CLI::App* ScenariosCommand::add(CLI::App& parent) {
     app->add_option("--catalog", opt_.catalog, "Asset catalog (default: data/scenario/assets.yaml)");
     app->add_option("--taxonomy", opt_.taxonomy, "ODD taxonomy (default: data/odd/railway_odd.yaml)");
     app->add_option("--odd-spec", opt_.odd_spec, "Declared ODD: coverage.json also lists its gaps");
-    app->add_option("--strategy", opt_.strategy, "full, pairwise or random")->capture_default_str();
+    app->add_option("--strategy", opt_.strategy, "cover (every ODD element and class of the route, pairwise over parameters), pairwise, full or random")->capture_default_str();
     app->add_option("--count", opt_.count, "Scenarios per template (random: required; others: at most; at most 100000)")
         ->check(unsigned_integer);
     app->add_option("--seed", opt_.seed, "Seed of the random strategy")->capture_default_str()->check(unsigned_integer);
@@ -200,7 +200,7 @@ int ScenariosCommand::run() {
 
     // Coverage of the route's ODD (and the declared one)
     const scenario::Coverage coverage =
-        scenario::compute_coverage(profile, taxonomy, generation, spec ? &*spec : nullptr);
+        scenario::compute_coverage(profile, taxonomy, generation, spec ? &*spec : nullptr, &templates);
 
     // Write everything, then move it into place
     scenario::OutputInfo info{map_dir.string(), gen.map_file, taxonomy_file, catalog_file, templates_file,

@@ -18,7 +18,7 @@ struct ScenariosOptions {
     std::string catalog;   // empty: data/scenario/assets.yaml
     std::string taxonomy;  // empty: data/odd/railway_odd.yaml
     std::string odd_spec;  // empty: coverage of the route only
-    std::string strategy = "pairwise";
+    std::string strategy = "cover";
     std::size_t count = 0;
     std::uint64_t seed = 1;
     std::size_t max_anchors = 0;

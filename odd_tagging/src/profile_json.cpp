@@ -173,6 +173,33 @@ const AttributeValue* TaggedElement::find(const std::string& attribute) const {
     return nullptr;
 }
 
+namespace {
+
+ojson track_end_json(const TrackEnd& t) {
+    return ojson::array({t.track, t.from_node, t.to_node, t.from_heading, t.to_heading});
+}
+
+template <class Json>
+std::vector<TrackEnd> track_ends_from(const Json& list) {
+    std::vector<TrackEnd> out;
+    if (!list.is_array()) {
+        throw std::invalid_argument("track_ends: expected an array");
+    }
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const auto& t = list[i];
+        if (!t.is_array() || t.size() != 5 || !t[0].is_number_unsigned() || !t[1].is_number_integer() ||
+            !t[2].is_number_integer() || !t[3].is_number() || !t[4].is_number()) {
+            throw std::invalid_argument("track_ends[" + std::to_string(i) +
+                                        "]: expected [track, from node, to node, from heading, to heading]");
+        }
+        out.push_back({t[0].template get<std::size_t>(), t[1].template get<std::int64_t>(),
+                       t[2].template get<std::int64_t>(), t[3].template get<double>(), t[4].template get<double>()});
+    }
+    return out;
+}
+
+} // namespace
+
 nlohmann::ordered_json to_json(const OddProfile& profile) {
     ojson j;
     j["railodd"] = {{"format", "odd_profile"}, {"format_version", format_version}};
@@ -182,6 +209,13 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
     j["route"] = {{"description", profile.route}, {"length_m", profile.length_m}, {"tracks", profile.tracks}};
     if (profile.along_route) {
         j["route"]["along_route"] = true;
+    }
+    if (!profile.track_ends.empty()) {
+        ojson ends = ojson::array();
+        for (const auto& t : profile.track_ends) {
+            ends.push_back(track_end_json(t));
+        }
+        j["track_ends"] = std::move(ends);
     }
     ojson elements = ojson::array();
     for (const auto& e : profile.elements) {
@@ -202,12 +236,20 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
 // JSON tree, and each element sits on its own line.
 void write_json(const OddProfile& profile, std::ostream& out) {
     OddProfile bare{profile.taxonomy_name, profile.taxonomy_version, profile.taxonomy_file,
-                    profile.route, profile.length_m, profile.tracks, {}, {}, {}};
+                    profile.route, profile.length_m, profile.tracks, {}, {}, {}, false, {}};
     bare.along_route = profile.along_route;
     ojson head = to_json(bare);
     out << "{\n";
     for (const char* key : {"railodd", "taxonomy", "route"}) {
         out << " \"" << key << "\": " << head[key].dump() << ",\n";
+    }
+    if (!profile.track_ends.empty()) {
+        out << " \"track_ends\": [\n";
+        for (std::size_t i = 0; i < profile.track_ends.size(); ++i) {
+            out << "  " << track_end_json(profile.track_ends[i]).dump()
+                << (i + 1 < profile.track_ends.size() ? ",\n" : "\n");
+        }
+        out << " ],\n";
     }
     out << " \"elements\": [\n";
     std::string line;
@@ -246,6 +288,9 @@ OddProfile profile_from(const Json& j) {
     p.length_m = get<double>(route, "length_m", "route");
     p.tracks = get_or<std::size_t>(route, "tracks", "route", 0);
     p.along_route = get_or<bool>(route, "along_route", "route", false);
+    if (j.contains("track_ends")) {
+        p.track_ends = track_ends_from(j["track_ends"]);
+    }
     const auto& elements = required(j, "elements", "");
     if (!elements.is_array()) {
         throw std::invalid_argument("elements: expected an array");

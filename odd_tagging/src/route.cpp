@@ -169,6 +169,7 @@ OddProfile along_route(const OddProfile& profile, const Route& route, const Taxo
     out.length_m = route.length_m;
     out.tracks = route.pieces.size();
     out.along_route = true;
+    out.track_ends.clear(); // chainage is the route's: one line
     out.summary = summarize(out, &taxonomy);
     return out;
 }

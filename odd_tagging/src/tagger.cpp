@@ -36,8 +36,13 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
     TagContext ctx(input, taxonomy, p);
     for (std::size_t e = 0; e < input.map_input.fitted_tracks.edges.size(); ++e) {
         if (ctx.written(e)) {
-            p.length_m += ctx.alignment(e).length();
+            const auto& a = ctx.alignment(e);
+            p.length_m += a.length();
             ++p.tracks;
+            const auto& edge = input.map_input.tracks.edges[e];
+            p.track_ends.push_back({e, input.map_input.tracks.vertices[edge.from].node_id,
+                                    input.map_input.tracks.vertices[edge.to].node_id, a.evaluate(0.0).hdg,
+                                    a.evaluate(a.length()).hdg});
         }
     }
     // Scenery from the geometry, then from the ways' tags and the features;

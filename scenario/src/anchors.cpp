@@ -10,7 +10,6 @@ namespace railodd::scenario {
 
 namespace {
 
-constexpr const char* horizontal = "Scenery/Track geometry/Horizontal/";
 constexpr const char* speed_limit = "Operational Conditions/Speed/Speed limit";
 constexpr double min_overrun_m = 20.0; // past the anchor: the stop trigger's 5 m and a step of a fast train, with room
 constexpr double eps = 1e-6;
@@ -85,101 +84,53 @@ double hazard_run_up(const Template& t, double ego_half_length_m) {
     return need;
 }
 
-} // namespace
-
-LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.along_route) {
-    for (const auto& e : profile.elements) {
-        if (e.point || e.element.rfind(horizontal, 0) != 0) {
-            continue;
+// The ego's run around an anchor: from run_up_m before it to overrun_m past
+// it (or to stop_before_m short of it), or why the track there cannot hold it.
+std::optional<std::string> place_run(const odd::OddProfile& profile, const std::vector<std::size_t>& on_line,
+                                     const LineIndex& lines, const Template& t, double ego_half_length_m, Anchor& a) {
+    const auto place = lines.at(a.line, a.chainage);
+    const double run_up = a.chainage - lines.start(a.line);
+    auto metres = [](double m) { return std::to_string(static_cast<long>(std::ceil(m - 1e-9))); };
+    if (!place) {
+        return "no track geometry at chainage " + std::to_string(a.chainage);
+    }
+    if (run_up < t.ego.min_run_up_m) {
+        return "only " + std::to_string(static_cast<long>(run_up)) + " m of track before the anchor, the template needs " +
+               metres(t.ego.min_run_up_m) + " m";
+    }
+    if (const double need = hazard_run_up(t, ego_half_length_m); run_up < need) {
+        return "only " + std::to_string(static_cast<long>(run_up)) +
+               " m of track before the anchor, the hazard's timing (hazard_before_m) needs " + metres(need) + " m";
+    }
+    a.place = *place;
+    a.start_chainage = std::max(lines.start(a.line), a.chainage - t.ego.run_up_m);
+    a.speed_limit_kmh = limit_at(profile, on_line, a.chainage);
+    if (t.ego.stop_before_m) {
+        // The train's front stops short of the anchor: its reference point
+        // (the middle) half a train further back.
+        a.end_chainage = a.chainage - *t.ego.stop_before_m - ego_half_length_m;
+        if (a.end_chainage - a.start_chainage < t.ego.min_run_up_m) {
+            return "only " + std::to_string(static_cast<long>(run_up)) +
+                   " m of track before the anchor, too little for the train to stop " + metres(*t.ego.stop_before_m) +
+                   " m short of it after a run of " + metres(t.ego.min_run_up_m) + " m";
         }
-        lines_[line_of(e)].push_back({e.chainage_start, e.chainage_end, e.road_id, e.s_start, e.s_end, e.reversed});
-    }
-    for (auto& [line, pieces] : lines_) {
-        std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
-    }
-}
-
-double LineIndex::start(std::size_t line) const {
-    const auto it = lines_.find(line);
-    return it == lines_.end() ? 0.0 : it->second.front().c0;
-}
-
-double LineIndex::end(std::size_t line) const {
-    const auto it = lines_.find(line);
-    double c = 0.0;
-    if (it != lines_.end()) {
-        for (const auto& p : it->second) {
-            c = std::max(c, p.c1);
-        }
-    }
-    return c;
-}
-
-const LineIndex::Piece* LineIndex::piece(std::size_t line, double chainage) const {
-    const auto it = lines_.find(line);
-    if (it == lines_.end()) {
-        return nullptr;
-    }
-    const auto& v = it->second;
-    auto p = std::upper_bound(v.begin(), v.end(), chainage, [](double c, const Piece& q) { return c < q.c0; });
-    if (p == v.begin()) {
-        return chainage >= v.front().c0 - eps ? &v.front() : nullptr;
-    }
-    --p;
-    return chainage <= p->c1 + eps ? &*p : nullptr;
-}
-
-std::optional<LanePlacement> LineIndex::at(std::size_t line, double chainage) const {
-    const Piece* p = piece(line, chainage);
-    if (!p) {
         return std::nullopt;
     }
-    // A centimetre inside the piece: at a road's very end the written s can
-    // round past the road's length, which players truncate with an error.
-    const double len = p->c1 - p->c0, inside = std::min(0.01, 0.5 * len);
-    const double d = std::clamp(chainage - p->c0, inside, len - inside);
-    LanePlacement out;
-    out.road_id = p->road_id;
-    out.lane_id = -1; // rail roads carry one rail lane, right of the reference line (docs/xodr.md)
-    out.s = p->reversed ? p->s1 - d : p->s0 + d;
-    out.reversed = p->reversed;
-    return out;
+    // The train must pass the anchor (and every actor placed after it) before
+    // its run ends: the stop trigger fires a few metres short of the end.
+    double past = min_overrun_m;
+    for (const auto& actor : t.actors) {
+        past = std::max(past, actor.along_m + min_overrun_m);
+    }
+    if (lines.end(a.line) - a.chainage < past) {
+        return "only " + std::to_string(static_cast<long>(lines.end(a.line) - a.chainage)) +
+               " m of track after the anchor, the train needs " + metres(past) + " m to run past it";
+    }
+    a.end_chainage = std::min(lines.end(a.line), a.chainage + t.ego.overrun_m);
+    return std::nullopt;
 }
 
-std::vector<LanePlacement> LineIndex::waypoints(std::size_t line, double c0, double c1) const {
-    std::vector<LanePlacement> out;
-    if (auto a = at(line, c0)) {
-        out.push_back(*a);
-    }
-    const auto it = lines_.find(line);
-    if (it != lines_.end()) {
-        // Runs of one road strictly between the ends: the router needs one point on each.
-        std::string road = out.empty() ? "" : out.front().road_id;
-        double run0 = c0;
-        for (const auto& p : it->second) {
-            if (p.c1 <= c0 + eps || p.c0 >= c1 - eps || p.road_id == road) {
-                continue;
-            }
-            run0 = std::max(p.c0, c0);
-            double run1 = run0;
-            for (const auto& q : it->second) {
-                if (q.road_id == p.road_id && q.c0 >= run0 - eps && q.c0 < c1) {
-                    run1 = std::max(run1, std::min(q.c1, c1));
-                }
-            }
-            road = p.road_id;
-            if (auto w = at(line, 0.5 * (run0 + run1)); w && w->road_id == road) {
-                out.push_back(*w);
-            }
-        }
-    }
-    if (auto b = at(line, c1)) {
-        if (out.empty() || b->road_id != out.back().road_id || std::abs(b->s - out.back().s) > eps) {
-            out.push_back(*b);
-        }
-    }
-    return out;
-}
+} // namespace
 
 bool matches(const odd::TaggedElement& e, const ElementMatch& match) {
     if (!under(e.element, match.element)) {
@@ -220,42 +171,11 @@ Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, c
         if (!complete) {
             continue; // not a place for this template; only places that match are reported
         }
-        const auto place = lines.at(a.line, a.chainage);
-        const double run_up = a.chainage - lines.start(a.line);
-        if (!place) {
-            out.skipped.push_back({i, "no track geometry at chainage " + std::to_string(a.chainage)});
-            continue;
+        if (auto why = place_run(profile, on_line, lines, t, ego_half_length_m, a)) {
+            out.skipped.push_back({i, std::move(*why)});
+        } else {
+            out.anchors.push_back(std::move(a));
         }
-        if (run_up < t.ego.min_run_up_m) {
-            out.skipped.push_back({i, "only " + std::to_string(static_cast<long>(run_up)) +
-                                          " m of track before the anchor, the template needs " +
-                                          std::to_string(static_cast<long>(t.ego.min_run_up_m)) + " m"});
-            continue;
-        }
-        if (const double need = hazard_run_up(t, ego_half_length_m); run_up < need) {
-            out.skipped.push_back({i, "only " + std::to_string(static_cast<long>(run_up)) +
-                                          " m of track before the anchor, the hazard's timing (hazard_before_m) needs " +
-                                          std::to_string(static_cast<long>(std::ceil(need))) + " m"});
-            continue;
-        }
-        // The train must pass the anchor (and every actor placed after it)
-        // before its run ends: the stop trigger fires a few metres short of
-        // the end.
-        double past = min_overrun_m;
-        for (const auto& actor : t.actors) {
-            past = std::max(past, actor.along_m + min_overrun_m);
-        }
-        if (lines.end(a.line) - a.chainage < past) {
-            out.skipped.push_back({i, "only " + std::to_string(static_cast<long>(lines.end(a.line) - a.chainage)) +
-                                          " m of track after the anchor, the train needs " +
-                                          std::to_string(static_cast<long>(past)) + " m to run past it"});
-            continue;
-        }
-        a.place = *place;
-        a.start_chainage = std::max(lines.start(a.line), a.chainage - t.ego.run_up_m);
-        a.end_chainage = std::min(lines.end(a.line), a.chainage + t.ego.overrun_m);
-        a.speed_limit_kmh = limit_at(profile, on_line, a.chainage);
-        out.anchors.push_back(std::move(a));
     }
     std::stable_sort(out.anchors.begin(), out.anchors.end(), [](const Anchor& x, const Anchor& y) {
         return x.line != y.line ? x.line < y.line : x.chainage < y.chainage;

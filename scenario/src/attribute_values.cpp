@@ -67,4 +67,8 @@ std::string format_number(double value) {
     return buf;
 }
 
+bool countable(const odd::Attribute& a) {
+    return a.type != odd::AttributeType::string && (a.type != odd::AttributeType::number || !a.bins.empty());
+}
+
 } // namespace railodd::scenario

@@ -20,6 +20,10 @@ std::string check_value(const odd::Attribute& attribute, const std::string& valu
 // itself when the attribute has no bins), the value itself otherwise.
 std::string value_class(const odd::Attribute& attribute, const std::string& value);
 
+// Whether coverage counts the attribute's classes: numbers without classes
+// (lengths, angles) and free strings have no finite set to cover.
+bool countable(const odd::Attribute& attribute);
+
 // Shortest text of a number as parameters and texts show it ("80", "0.5").
 std::string format_number(double value);
 

@@ -82,6 +82,13 @@ std::string behavior_yaml(const ScenarioRecord& rec, const odd::OddProfile& prof
         actor(y, a, sc.trigger_distance_m);
     }
     y << YAML::EndSeq;
+    if (!sc.conditions.empty()) {
+        y << YAML::Key << "conditions" << YAML::Value << YAML::BeginMap;
+        for (const auto& [k, v] : sc.conditions) {
+            y << YAML::Key << k << YAML::Value << v;
+        }
+        y << YAML::EndMap;
+    }
     const auto& e = profile.elements[rec.anchor.element];
     y << YAML::Key << "railway" << YAML::Value << YAML::BeginMap << YAML::Key << "anchor" << YAML::Value
       << YAML::BeginMap << YAML::Key << "element" << YAML::Value << e.element << YAML::Key << "at" << YAML::Value;

@@ -4,6 +4,7 @@
 #include "railodd/scenario/coverage.hpp"
 
 #include "attribute_values.hpp"
+#include "coverage_gaps.hpp"
 
 #include <map>
 #include <set>
@@ -14,11 +15,6 @@ namespace railodd::scenario {
 namespace {
 
 using Key = std::tuple<std::string, std::string, std::string>; // element, attribute, class
-
-// Numbers without classes (lengths, angles) have no finite set to cover.
-bool countable(const odd::Attribute& a) {
-    return a.type != odd::AttributeType::string && (a.type != odd::AttributeType::number || !a.bins.empty());
-}
 
 std::string text_of(const odd::AttributeValue& v) {
     if (const double* x = std::get_if<double>(&v)) {
@@ -68,6 +64,8 @@ std::map<Key, std::size_t> scenario_items(const Generation& g, const odd::Taxono
     return items;
 }
 
+} // namespace
+
 // The classes a spec constraint allows: its listed values or bins, or the
 // attribute's bins its range overlaps, or all of the attribute's classes.
 std::vector<std::string> allowed_classes(const odd::AttributeConstraint& c, const odd::Attribute& a) {
@@ -89,6 +87,8 @@ std::vector<std::string> allowed_classes(const odd::AttributeConstraint& c, cons
     }
     return out;
 }
+
+namespace {
 
 bool under(const std::string& path, const std::string& element) {
     return path == element || path.rfind(element + "/", 0) == 0;
@@ -134,7 +134,7 @@ std::vector<CoverageItem> spec_items(const odd::OddSpec& spec, const odd::Taxono
 } // namespace
 
 Coverage compute_coverage(const odd::OddProfile& profile, const odd::Taxonomy& taxonomy, const Generation& generation,
-                          const odd::OddSpec* spec) {
+                          const odd::OddSpec* spec, const TemplateSet* templates) {
     Coverage c;
     c.scenarios = generation.scenarios.size();
     c.runs = generation.runs;
@@ -161,6 +161,7 @@ Coverage compute_coverage(const odd::OddProfile& profile, const odd::Taxonomy& t
         c.spec_name = spec->name;
         c.spec = spec_items(*spec, taxonomy, route, covered);
     }
+    explain_gaps(c, profile, taxonomy, generation, templates, spec);
     return c;
 }
 

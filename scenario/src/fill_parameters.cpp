@@ -6,6 +6,7 @@
 #include "environment.hpp"
 #include "instantiate.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -79,6 +80,43 @@ void declare_environment(ConcreteScenario& sc, const std::string& element_id, co
     }
 }
 
+// "signal_aspect" -> "SignalAspect": OpenSCENARIO parameter names in the writer's style.
+std::string camel(const std::string& name) {
+    std::string out;
+    bool up = true;
+    for (const char c : name) {
+        if (c == '_' || c == '-' || c == ' ') {
+            up = true;
+            continue;
+        }
+        out += up ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+        up = false;
+    }
+    return out;
+}
+
+// A degraded mode's settings: those with an OpenSCENARIO mapping change the
+// environment, the others are carried as conditions; all are recorded as the
+// ODD values the scenario exercises.
+void apply_mode(const TemplateContext& ctx, const DegradedMode& m, ScenarioRecord& rec) {
+    ConcreteScenario& sc = rec.scenario;
+    declare(sc, "DegradedMode", "string", m.id);
+    sc.conditions.emplace_back("degraded_mode", m.id);
+    sc.conditions.emplace_back("degraded_mode_family", m.family);
+    for (const auto& set : m.sets) {
+        const odd::Element* el = ctx.taxonomy.find(set.element);
+        const odd::Attribute* attr = ctx.taxonomy.attribute(*el, set.attribute);
+        if (set.environment) {
+            apply_perturbation(sc.environment, el->id, set.attribute, set.value);
+            declare_environment(sc, el->id, set.attribute);
+        } else {
+            sc.conditions.emplace_back(set.element + " " + set.attribute, set.value);
+        }
+        rec.odd_elements.push_back({set.element, "", "", "", "degraded_mode"});
+        rec.odd_elements.push_back({set.element, set.attribute, set.value, value_class(*attr, set.value), "degraded_mode"});
+    }
+}
+
 } // namespace
 
 void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed& speed, ScenarioRecord& rec) {
@@ -120,6 +158,19 @@ void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed&
             rec.raw.emplace_back(p.name, raw);
             rec.odd_elements.push_back({p.element, "", "", "", "perturbation"});
             rec.odd_elements.push_back({p.element, p.attribute, raw, klass, "perturbation"});
+            break;
+        }
+        case ParameterKind::choice:
+            rec.values.emplace_back(p.name, raw);
+            rec.raw.emplace_back(p.name, raw);
+            declare(sc, camel(p.name).c_str(), "string", raw);
+            sc.conditions.emplace_back(p.name, raw);
+            break;
+        case ParameterKind::degraded_mode: {
+            const DegradedMode& m = p.modes[row[dim + 1]];
+            rec.values.emplace_back(p.name, m.text);
+            rec.raw.emplace_back(p.name, m.id);
+            apply_mode(ctx, m, rec);
             break;
         }
         }

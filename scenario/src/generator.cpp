@@ -10,7 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
+#include <map>
 #include <set>
+#include <tuple>
 #include <stdexcept>
 
 namespace railodd::scenario {
@@ -123,6 +126,69 @@ double ego_half_length(const Template& t, const Catalog& catalog) {
 
 } // namespace
 
+namespace {
+
+// Numbers every map item (element, attribute, class) an anchor of a template
+// exercises, for the set cover of `--strategy cover`: candidates[t][a] lists
+// the items of anchor a of template t.
+std::vector<std::vector<std::vector<std::size_t>>> anchor_items(const std::deque<TemplateContext>& ctxs,
+                                                                std::size_t& item_count) {
+    std::map<std::tuple<std::string, std::string, std::string>, std::size_t> ids;
+    std::vector<std::vector<std::vector<std::size_t>>> out;
+    for (const auto& ctx : ctxs) {
+        auto& per_anchor = out.emplace_back();
+        for (const auto& cover : ctx.anchor_cover) {
+            std::set<std::size_t> items;
+            for (const auto& v : cover) {
+                const odd::Element* el = ctx.taxonomy.find(v.element);
+                const odd::Attribute* a = el && !v.attribute.empty() ? ctx.taxonomy.attribute(*el, v.attribute) : nullptr;
+                if (v.attribute.empty() || (a && countable(*a))) {
+                    items.insert(ids.emplace(std::tuple{v.element, v.attribute, v.value_class}, ids.size()).first->second);
+                }
+            }
+            per_anchor.emplace_back(items.begin(), items.end());
+        }
+    }
+    item_count = ids.size();
+    return out;
+}
+
+std::vector<std::size_t> parameter_sizes(const Template& t, std::vector<std::size_t>& varied, TemplateRun& run,
+                                         std::size_t anchors) {
+    run.template_id = t.id;
+    run.anchors = anchors;
+    run.dimensions.push_back("anchor");
+    run.sizes.push_back(anchors);
+    for (std::size_t i = 0; i < t.parameters.size(); ++i) {
+        if (t.parameters[i].kind != ParameterKind::map_value) {
+            varied.push_back(i);
+            run.dimensions.push_back(t.parameters[i].name);
+            run.sizes.push_back(t.parameters[i].values.size());
+        }
+    }
+    return run.sizes;
+}
+
+// Under the cover strategy, the set's size against pairwise over all anchors
+// and the full factorial, and the pairs of the parameters alone.
+void cover_figures(TemplateRun& run, const Validity& valid, const std::vector<Row>& rows) {
+    run.full_factorial = 1.0;
+    for (const auto n : run.sizes) {
+        run.full_factorial *= static_cast<double>(n);
+    }
+    run.pairwise_rows = pairwise(run.sizes, valid).size();
+    const std::vector<std::size_t> params(run.sizes.begin() + 1, run.sizes.end());
+    std::vector<Row> param_rows;
+    for (const auto& r : rows) {
+        param_rows.emplace_back(r.begin() + 1, r.end());
+    }
+    if (run.sizes[0] > 0) {
+        run.pairs = pair_coverage(params, [&](const Row& r) { return any_anchor(run.sizes[0], valid, r); }, param_rows);
+    }
+}
+
+} // namespace
+
 Generation generate(const odd::OddProfile& profile, const TemplateSet& templates, const Catalog& catalog,
                     const odd::Taxonomy& taxonomy, const GenerateOptions& options) {
     if (options.strategy == Strategy::random && options.count == 0) {
@@ -130,37 +196,52 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
     }
     const LineIndex lines(profile);
     Generation out;
-    std::set<std::string> used_assets;
+    // Anchors and what each exercises, for every template first: the cover
+    // strategy chooses anchors across templates.
+    std::deque<std::vector<Anchor>> anchors;
+    std::deque<TemplateContext> ctxs;
     for (const Template& t : templates.templates) {
         Anchoring anchoring = find_anchors(profile, lines, t, ego_half_length(t, catalog));
-        const std::vector<Anchor> anchors = thin(std::move(anchoring.anchors), options.max_anchors);
-        TemplateContext ctx{profile, lines, t, catalog, taxonomy, options, anchors, {}};
-        TemplateRun run;
-        run.template_id = t.id;
-        run.anchors = anchors.size();
+        anchors.push_back(thin(std::move(anchoring.anchors), options.max_anchors));
+        ctxs.push_back(TemplateContext{profile, lines, t, catalog, taxonomy, options, anchors.back(), {}, {}, {}});
+        TemplateRun& run = out.runs.emplace_back();
         run.skipped = std::move(anchoring.skipped);
-        run.dimensions.push_back("anchor");
-        run.sizes.push_back(anchors.size());
-        for (std::size_t i = 0; i < t.parameters.size(); ++i) {
-            if (t.parameters[i].kind != ParameterKind::map_value) {
-                ctx.varied.push_back(i);
-                run.dimensions.push_back(t.parameters[i].name);
-                run.sizes.push_back(t.parameters[i].values.size());
-            }
-        }
-        prepare(ctx);
+        parameter_sizes(t, ctxs.back().varied, run, anchors.back().size());
+        prepare(ctxs.back());
+    }
+    std::vector<std::vector<std::size_t>> chosen;
+    if (options.strategy == Strategy::cover) {
+        std::size_t items = 0;
+        const auto candidates = anchor_items(ctxs, items);
+        chosen = choose_anchors(candidates, items, options.seed);
+    }
+    std::set<std::string> used_assets;
+    for (std::size_t k = 0; k < ctxs.size(); ++k) {
+        const TemplateContext& ctx = ctxs[k];
+        const Template& t = ctx.tmpl;
+        TemplateRun& run = out.runs[k];
         const Validity valid = validity(ctx);
         const std::string where = templates.source + (t.line > 0 ? ":" + std::to_string(t.line) : "");
-        const std::vector<Row> rows = rows_for(run.sizes, valid, options, where + ": template '" + t.id + "'", run);
+        std::vector<Row> rows;
+        if (options.strategy == Strategy::cover) {
+            // Every template with anchors takes part: its parameters' pairs
+            // need a row even where the set cover chose none of its anchors.
+            if (chosen[k].empty() && !anchors[k].empty()) {
+                chosen[k].push_back(0);
+            }
+            rows = cover_rows(run.sizes, valid, chosen[k]);
+            cover_figures(run, valid, rows);
+        } else {
+            rows = rows_for(run.sizes, valid, options, where + ": template '" + t.id + "'", run);
+            run.pairs = pair_coverage(run.sizes, valid, rows);
+        }
         run.rows = rows.size();
-        run.pairs = pair_coverage(run.sizes, valid, rows);
         for (std::size_t n = 0; n < rows.size(); ++n) {
             out.scenarios.push_back(instantiate(ctx, rows[n], scenario_id(t.id, n + 1)));
             for (const auto& [actor, id] : out.scenarios.back().assets) {
                 used_assets.insert(id);
             }
         }
-        out.runs.push_back(std::move(run));
     }
     for (const auto& a : catalog.assets) {
         if (used_assets.contains(a.id)) {

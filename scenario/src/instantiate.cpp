@@ -19,6 +19,7 @@ namespace {
 constexpr double platform_edge_m = 2.0;  // from the track centre: the edge is ~1.7 m (EBO), people stand just behind it
 constexpr double beside_track_m = 3.5;   // beyond the clearance gauge
 constexpr double crossing_approach_m = 10.0; // on the road, short of the barriers
+constexpr double adjacent_track_m = 4.0;     // track centres of a double line (EBO: 4.0 m)
 constexpr double fallback_speed_kmh = 80.0; // where no speed limit is mapped
 constexpr double across_step_m = 1.0;       // along the track while stepping across it
 
@@ -48,6 +49,7 @@ double lateral_offset(Lateral l, double side) {
     case Lateral::platform_edge: return side * platform_edge_m;
     case Lateral::beside_track: return side * beside_track_m;
     case Lateral::crossing_approach: return side * crossing_approach_m;
+    case Lateral::adjacent_track: return side * adjacent_track_m;
     }
     return 0.0;
 }
@@ -85,19 +87,27 @@ void cover_asset(const TemplateContext& ctx, const Asset& asset, std::vector<Cov
     }
 }
 
-// The map's part of a scenario: the anchor, its context and every stretch of
-// track the anchor point lies on (speed limit, gradient, track count, ...).
+// The map's part of a scenario: the anchor, its context, every stretch of
+// track the anchor point lies on (speed limit, gradient, track count, ...)
+// and, for a stretch anchor, the points within it (a platform's station, a
+// bridge's signal).
 std::vector<CoveredValue> cover_map(const TemplateContext& ctx, const Anchor& a,
                                     const std::vector<std::size_t>& on_line) {
     std::vector<CoveredValue> out;
-    cover_element(ctx, ctx.profile.elements[a.element], out);
+    const auto& anchor = ctx.profile.elements[a.element];
+    cover_element(ctx, anchor, out);
     for (const auto i : a.context) {
         cover_element(ctx, ctx.profile.elements[i], out);
     }
     for (const std::size_t i : on_line) {
         const auto& e = ctx.profile.elements[i];
-        if (i != a.element && !e.point && e.chainage_start <= a.chainage && e.chainage_end >= a.chainage &&
-            std::find(a.context.begin(), a.context.end(), i) == a.context.end()) {
+        if (i == a.element || std::find(a.context.begin(), a.context.end(), i) != a.context.end()) {
+            continue;
+        }
+        const bool on_it = !e.point && e.chainage_start <= a.chainage && e.chainage_end >= a.chainage;
+        const bool inside = e.point && !anchor.point && e.chainage_start >= anchor.chainage_start &&
+                            e.chainage_start <= anchor.chainage_end;
+        if (on_it || inside) {
             cover_element(ctx, e, out);
         }
     }

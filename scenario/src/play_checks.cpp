@@ -109,6 +109,19 @@ bool follows_route(const std::vector<Sample>& ego, const json& route, std::strin
     return true;
 }
 
+// Passed between two samples on the road, or within a step (plus `slack`)
+// of the place where the road ends there or the run stops.
+bool passes(const std::vector<Sample>& ego, const std::string& road, double s, double slack) {
+    for (std::size_t i = 1; i < ego.size(); ++i) {
+        const double step = std::hypot(ego[i].x - ego[i - 1].x, ego[i].y - ego[i - 1].y) + 0.5 + slack;
+        if ((ego[i].road_id == road && ego[i - 1].road_id == road && (ego[i - 1].s - s) * (ego[i].s - s) <= 0.0) ||
+            (ego[i].road_id == road && std::abs(ego[i].s - s) <= step)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 void ego_checks(Run& r, const std::vector<Sample>& ego) {
     const json& e = r.sc.at("ego");
     const int lane = e.at("start").at("lane_id").get<int>();
@@ -124,19 +137,14 @@ void ego_checks(Run& r, const std::vector<Sample>& ego) {
             other_lane.empty() ? "largest distance from the lane centre " + fmt(worst, 3) + " m" : other_lane);
     std::string detail;
     r.check("ego follows its route", follows_route(ego, e.at("route_roads"), detail), detail);
-    const json& a = r.sc.at("anchor");
+    // A run that stops short of its anchor (a buffer stop) must reach its
+    // end instead; the stop trigger fires within 5 m of it.
+    const bool stops_short = e.contains("stops_short_of_anchor") && e.at("stops_short_of_anchor").get<bool>();
+    const json& a = stops_short ? e.at("end") : r.sc.at("anchor");
     const std::string road = a.at("road_id").get<std::string>();
     const double s_anchor = a.at("s").get<double>();
-    // Passed between two samples on the anchor's road, or within a step of
-    // it where the road ends there.
-    bool reached = false;
-    for (std::size_t i = 1; i < ego.size() && !reached; ++i) {
-        const double step = std::hypot(ego[i].x - ego[i - 1].x, ego[i].y - ego[i - 1].y) + 0.5;
-        reached = (ego[i].road_id == road && ego[i - 1].road_id == road &&
-                   (ego[i - 1].s - s_anchor) * (ego[i].s - s_anchor) <= 0.0) ||
-                  (ego[i].road_id == road && std::abs(ego[i].s - s_anchor) <= step);
-    }
-    r.check("ego reaches the anchor", reached, "road " + road + " s " + fmt(s_anchor, 1));
+    r.check(stops_short ? "ego reaches its stop" : "ego reaches the anchor", passes(ego, road, s_anchor, stops_short ? 6.0 : 0.0),
+            "road " + road + " s " + fmt(s_anchor, 1));
 }
 
 bool on_route_road(const json& sc, const std::string& road) {
@@ -159,9 +167,12 @@ void start_checks(Run& r, const json& actor, const std::vector<Sample>& v, const
     if (actor.at("place") == "crossing_approach") {
         // A road user on its own road, not an offset beside the railway.
         r.check(name + " starts on the crossing road", !on_route_road(r.sc, road), "road " + road);
-    } else if (on_route_road(r.sc, road) && !path.empty()) {
+    } else if (const auto foot = path.empty() ? Path::Foot{} : path.project(first.x, first.y);
+               on_route_road(r.sc, road) && foot.chainage > 0.0 && foot.chainage < path.length()) {
+        // Measured where the recorded run passes the actor: a run that
+        // stops short of it (a buffer stop) has no track to measure from.
         const double want = std::abs(st.value("offset", 0.0));
-        const double got = path.project(first.x, first.y).distance;
+        const double got = foot.distance;
         r.check(name + " starts beside the track as placed", std::abs(got - want) <= 0.5,
                 fmt(got) + " m from the track centre, placed at " + fmt(want) + " m");
     }
@@ -179,11 +190,19 @@ void road_user_checks(Run& r, const json& actor, const std::vector<Sample>& v) {
     r.check(name + " stays on its road's lane", left.empty(), left);
 }
 
-void target_check(Run& r, const json& actor, const std::vector<Sample>& v) {
+// At the target's road and s, or, for a move onto the track, on the track
+// as the ego recorded it: where roads overlap (a parallel road, a crossing
+// road cut short) the player may report the other road's id.
+void target_check(Run& r, const json& actor, const std::vector<Sample>& v, const Path& path) {
     const json& target = actor.at("target");
     const Sample& last = v.back();
-    const bool there = last.road_id == target.at("road_id").get<std::string>() &&
-                       std::abs(last.s - target.at("s").get<double>()) <= 1.5;
+    bool there = last.road_id == target.at("road_id").get<std::string>() &&
+                 std::abs(last.s - target.at("s").get<double>()) <= 1.5;
+    if (!there && actor.value("move_to", "") == "on_track" && !path.empty()) {
+        const auto foot = path.project(last.x, last.y);
+        there = foot.chainage > 0.0 && foot.chainage < path.length() &&
+                foot.distance <= std::abs(target.value("offset", 0.0)) + 0.5;
+    }
     r.check(actor.at("name").get<std::string>() + " reaches its target", there,
             "ends on road " + last.road_id + " s " + fmt(last.s, 1));
 }
@@ -235,7 +254,7 @@ Analysis analyse(const json& sc, const Trajectories& tr, const PlayerLog& log, c
         }
         start_checks(r, a, *v, path);
         if (a.contains("target")) {
-            target_check(r, a, *v);
+            target_check(r, a, *v, path);
             if (a.at("place") == "crossing_approach" && a.at("kind") != "pedestrian") {
                 road_user_checks(r, a, *v);
             }

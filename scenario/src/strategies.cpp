@@ -7,6 +7,7 @@
 #include "railodd/scenario/strategies.hpp"
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <random>
 #include <set>
@@ -62,6 +63,33 @@ public:
             }
         }
         return false;
+    }
+
+    // Up to `max` open pairs from first_open's cursor on, without moving it.
+    std::vector<std::array<std::size_t, 4>> next_open(std::size_t max) const {
+        std::vector<std::array<std::size_t, 4>> out;
+        std::size_t ci = ci_, cj = cj_, ck = ck_;
+        for (; ci < n_ && out.size() < max; ++ci, cj = ci + 1, ck = 0) {
+            for (; cj < n_ && out.size() < max; ++cj, ck = 0) {
+                const auto& f = flags_[ci * n_ + cj];
+                for (; ck < f.size() && out.size() < max; ++ck) {
+                    if (f[ck]) {
+                        out.push_back({ci, ck / sizes_[cj], cj, ck % sizes_[cj]});
+                    }
+                }
+            }
+        }
+        return out;
+    }
+    // Open pairs a full row would close.
+    std::size_t gain(const Row& r) const {
+        std::size_t g = 0;
+        for (std::size_t i = 0; i < n_; ++i) {
+            for (std::size_t j = i + 1; j < n_; ++j) {
+                g += open(i, r[i], j, r[j]) ? 1 : 0;
+            }
+        }
+        return g;
     }
 
 private:
@@ -128,6 +156,8 @@ private:
     }
 };
 
+constexpr std::size_t pairwise_candidates = 24;
+
 bool empty_domain(const std::vector<std::size_t>& sizes) {
     for (const auto s : sizes) {
         if (s == 0) {
@@ -144,6 +174,7 @@ const char* to_string(Strategy s) {
     case Strategy::full: return "full";
     case Strategy::pairwise: return "pairwise";
     case Strategy::random: return "random";
+    case Strategy::cover: return "cover";
     }
     return "?";
 }
@@ -164,7 +195,8 @@ Strategy strategy_from(const std::string& name) {
     if (name == "full") return Strategy::full;
     if (name == "pairwise") return Strategy::pairwise;
     if (name == "random") return Strategy::random;
-    throw std::invalid_argument("unknown strategy '" + name + "' (full, pairwise or random)");
+    if (name == "cover") return Strategy::cover;
+    throw std::invalid_argument("unknown strategy '" + name + "' (cover, pairwise, full or random)");
 }
 
 std::vector<Row> full_factorial(const std::vector<std::size_t>& sizes, const Validity& valid, std::size_t limit) {
@@ -207,12 +239,26 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
         Row r(sizes.size(), kUnset);
         r[i] = vi;
         r[j] = vj;
-        if (valid(r) && complete(r)) {
-            open.close_row(r);
-            rows.push_back(std::move(r));
-        } else {
+        if (!valid(r) || !complete(r)) {
             open.close(i, vi, j, vj); // no valid row holds it: infeasible, not a gap
+            continue;
         }
+        // Rows grown from the next open pairs too: the one closing most
+        // pairs is kept (AETG's candidates, deterministic).
+        std::size_t best = open.gain(r);
+        for (const auto& [ci, cvi, cj, cvj] : open.next_open(pairwise_candidates)) {
+            Row c(sizes.size(), kUnset);
+            c[ci] = cvi;
+            c[cj] = cvj;
+            if (valid(c) && complete(c)) {
+                if (const std::size_t g = open.gain(c); g > best) {
+                    best = g;
+                    r = std::move(c);
+                }
+            }
+        }
+        open.close_row(r);
+        rows.push_back(std::move(r));
     }
     return rows;
 }
@@ -295,6 +341,123 @@ std::vector<Row> random_rows(const std::vector<std::size_t>& sizes, const Validi
         *every_valid_row = rows.size() == all->size();
     }
     return rows;
+}
+
+bool any_anchor(std::size_t anchors, const Validity& valid, const Row& params) {
+    Row full{0};
+    full.insert(full.end(), params.begin(), params.end());
+    for (std::size_t a = 0; a < anchors; ++a) {
+        full[0] = a;
+        if (valid(full)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::vector<Row> cover_rows(const std::vector<std::size_t>& sizes, const Validity& valid,
+                            const std::vector<std::size_t>& anchors) {
+    std::vector<Row> out;
+    if (sizes.empty() || empty_domain(sizes) || anchors.empty()) {
+        return out;
+    }
+    const std::vector<std::size_t> params(sizes.begin() + 1, sizes.end());
+    const auto with = [](std::size_t anchor, const Row& r) {
+        Row full{anchor};
+        full.insert(full.end(), r.begin(), r.end());
+        return full;
+    };
+    // A parameter row is valid where some anchor admits it (the speed limit
+    // is the anchor's).
+    const Validity valid_params = [&](const Row& r) { return any_anchor(sizes[0], valid, r); };
+    const std::vector<Row> rows = params.size() < 2 ? full_factorial(params, valid_params) : pairwise(params, valid_params);
+    std::set<std::size_t> used;
+    std::size_t turn = 0;
+    for (const Row& r : rows) {
+        std::optional<std::size_t> pick;
+        for (std::size_t k = 0; k < anchors.size() && !pick; ++k) {
+            const std::size_t a = anchors[(turn + k) % anchors.size()];
+            pick = valid(with(a, r)) ? std::optional<std::size_t>(a) : std::nullopt;
+        }
+        for (std::size_t a = 0; a < sizes[0] && !pick; ++a) {
+            pick = valid(with(a, r)) ? std::optional<std::size_t>(a) : std::nullopt;
+        }
+        if (pick) {
+            out.push_back(with(*pick, r));
+            used.insert(*pick);
+            ++turn;
+        }
+    }
+    // Chosen anchors no row took: the first row valid there, else any valid completion.
+    PairTable none(sizes);
+    Completion complete(sizes, valid, none);
+    for (const std::size_t a : anchors) {
+        if (used.contains(a)) {
+            continue;
+        }
+        bool placed = false;
+        for (std::size_t i = 0; i < rows.size() && !placed; ++i) {
+            if (valid(with(a, rows[i]))) {
+                out.push_back(with(a, rows[i]));
+                placed = true;
+            }
+        }
+        Row r(sizes.size(), kUnset);
+        r[0] = a;
+        if (!placed && valid(r) && complete(r)) {
+            out.push_back(std::move(r));
+        }
+    }
+    return out;
+}
+
+std::vector<std::vector<std::size_t>> choose_anchors(const std::vector<std::vector<std::vector<std::size_t>>>& candidates,
+                                                     std::size_t item_count, std::uint64_t seed) {
+    struct Candidate {
+        std::size_t tmpl, anchor;
+        const std::vector<std::size_t>* items;
+    };
+    std::vector<Candidate> all;
+    for (std::size_t t = 0; t < candidates.size(); ++t) {
+        for (std::size_t a = 0; a < candidates[t].size(); ++a) {
+            all.push_back({t, a, &candidates[t][a]});
+        }
+    }
+    IndexDraw draw(seed);
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) { // Fisher-Yates: the tie order
+        std::swap(all[i], all[i + draw(all.size() - i)]);
+    }
+    std::vector<char> covered(item_count, 0);
+    std::vector<std::vector<std::size_t>> chosen(candidates.size());
+    std::vector<char> taken(all.size(), 0);
+    while (true) {
+        std::size_t best = all.size(), best_gain = 0;
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            if (taken[i]) {
+                continue;
+            }
+            std::size_t gain = 0;
+            for (const auto item : *all[i].items) {
+                gain += covered[item] ? 0 : 1;
+            }
+            if (gain > best_gain) {
+                best = i;
+                best_gain = gain;
+            }
+        }
+        if (best == all.size()) {
+            break;
+        }
+        taken[best] = 1;
+        for (const auto item : *all[best].items) {
+            covered[item] = 1;
+        }
+        chosen[all[best].tmpl].push_back(all[best].anchor);
+    }
+    for (auto& c : chosen) {
+        std::sort(c.begin(), c.end());
+    }
+    return chosen;
 }
 
 PairStats pair_coverage(const std::vector<std::size_t>& sizes, const Validity& valid, const std::vector<Row>& rows) {

@@ -23,12 +23,16 @@ public:
 
     void root(const YAML::Node& root) {
         yaml::require(file_, root, root.IsMap(), "a template file must be a YAML map with a 'templates' list");
-        yaml::check_keys(file_, root, {"name", "description", "taxonomy_version", "templates"}, "template file");
+        yaml::check_keys(file_, root, {"name", "description", "taxonomy_version", "degraded_modes", "templates"},
+                         "template file");
         if (const auto v = root["taxonomy_version"]) {
             const auto version = yaml::scalar(file_, v, "'taxonomy_version'");
             yaml::require(file_, v, version == tax_.version,
                           "templates are written for taxonomy version '" + version + "' but " + tax_.source +
                               " is version '" + tax_.version + "'");
+        }
+        if (const auto modes = root["degraded_modes"]) {
+            degraded_modes(modes);
         }
         const auto list = root["templates"];
         yaml::require(file_, list ? list : root, list && list.IsSequence() && list.size() > 0,
@@ -46,6 +50,9 @@ private:
     const odd::Taxonomy& tax_;
     const Catalog& cat_;
     const std::string file_;
+
+    void degraded_modes(const YAML::Node& map);
+    ModeSetting mode_setting(const YAML::Node& node, const std::string& what);
 
     Template one(const YAML::Node& node) {
         yaml::require(file_, node, node.IsMap() && node["id"], "each template needs an 'id'");
@@ -161,12 +168,16 @@ private:
     void ego(const YAML::Node& node, Template& t, const std::string& what) {
         if (node) {
             yaml::require(file_, node, node.IsMap(), what + ": 'ego' must be a map");
-            yaml::check_keys(file_, node, {"asset_class", "run_up_m", "min_run_up_m", "overrun_m"}, what + ": ego");
+            yaml::check_keys(file_, node, {"asset_class", "run_up_m", "min_run_up_m", "overrun_m", "stop_before_m"},
+                             what + ": ego");
             if (node["asset_class"]) t.ego.asset_class = yaml::scalar(file_, node["asset_class"], what + ": ego 'asset_class'");
             if (node["run_up_m"]) t.ego.run_up_m = yaml::number(file_, node["run_up_m"], what + ": 'run_up_m'");
             if (node["min_run_up_m"]) t.ego.min_run_up_m = yaml::number(file_, node["min_run_up_m"], what + ": 'min_run_up_m'");
             if (node["overrun_m"]) t.ego.overrun_m = yaml::number(file_, node["overrun_m"], what + ": 'overrun_m'");
-            for (const char* key : {"run_up_m", "min_run_up_m", "overrun_m"}) {
+            yaml::require(file_, node, !(node["overrun_m"] && node["stop_before_m"]),
+                          what + ": ego takes 'overrun_m' or 'stop_before_m', not both");
+            if (node["stop_before_m"]) t.ego.stop_before_m = yaml::number(file_, node["stop_before_m"], what + ": 'stop_before_m'");
+            for (const char* key : {"run_up_m", "min_run_up_m", "overrun_m", "stop_before_m"}) {
                 if (const auto v = node[key]) {
                     yaml::require(file_, v, yaml::number(file_, v, key) >= 0.0,
                                   what + ": ego '" + key + "' must not be negative, not " + v.Scalar());
@@ -181,12 +192,14 @@ private:
 
     Lateral lateral(const YAML::Node& v, const std::string& what) {
         const auto s = yaml::scalar(file_, v, what);
-        for (const auto l : {Lateral::on_track, Lateral::platform_edge, Lateral::beside_track, Lateral::crossing_approach}) {
+        for (const auto l : {Lateral::on_track, Lateral::platform_edge, Lateral::beside_track, Lateral::crossing_approach,
+                             Lateral::adjacent_track}) {
             if (s == to_string(l)) {
                 return l;
             }
         }
-        yaml::fail(file_, v, what + " must be on_track, platform_edge, beside_track or crossing_approach, not '" + s + "'");
+        yaml::fail(file_, v, what + " must be on_track, platform_edge, beside_track, crossing_approach or adjacent_track, not '" +
+                                 s + "'");
     }
 
     ActorTemplate actor(const YAML::Node& node, const Template& t, const std::string& what) {
@@ -231,6 +244,55 @@ private:
 };
 
 
+// degraded_modes: {ID: {family, text, sets: [{element, attribute, value}]}}
+void TemplateLoader::degraded_modes(const YAML::Node& map) {
+    yaml::require(file_, map, map.IsMap(), "'degraded_modes' must map mode ids to {family, text, sets}");
+    for (const auto& kv : map) {
+        DegradedMode m;
+        m.id = yaml::name(file_, kv.first, "degraded mode id");
+        m.line = yaml::line_of(kv.first);
+        const std::string w = "degraded mode '" + m.id + "'";
+        for (const auto& other : set_.degraded_modes) {
+            yaml::require(file_, kv.first, other.id != m.id, w + " is listed twice");
+        }
+        yaml::require(file_, kv.second, kv.second.IsMap() && kv.second["family"] && kv.second["text"],
+                      w + " needs a 'family' and a 'text'");
+        yaml::check_keys(file_, kv.second, {"family", "text", "sets"}, w);
+        m.family = yaml::scalar(file_, kv.second["family"], w + ": 'family'");
+        static const std::set<std::string> families{"none", "perception", "positioning", "communication", "adhesion"};
+        yaml::require(file_, kv.second["family"], families.contains(m.family),
+                      w + ": family must be none, perception, positioning, communication or adhesion, not '" + m.family + "'");
+        m.text = yaml::scalar(file_, kv.second["text"], w + ": 'text'");
+        if (const auto sets = kv.second["sets"]) {
+            yaml::require(file_, sets, sets.IsSequence(), w + ": 'sets' must be a list of {element, attribute, value}");
+            for (const auto& item : sets) {
+                m.sets.push_back(mode_setting(item, w));
+            }
+        }
+        yaml::require(file_, kv.second, m.family == "none" || !m.sets.empty(), w + ": 'sets' names no ODD value");
+        set_.degraded_modes.push_back(std::move(m));
+    }
+}
+
+ModeSetting TemplateLoader::mode_setting(const YAML::Node& node, const std::string& what) {
+    yaml::require(file_, node, node.IsMap() && node["element"] && node["attribute"] && node["value"],
+                  what + ": each setting needs an 'element', an 'attribute' and a 'value'");
+    yaml::check_keys(file_, node, {"element", "attribute", "value"}, what + ": setting");
+    ModeSetting s;
+    s.element = yaml::scalar(file_, node["element"], what + ": 'element'");
+    const odd::Element& e = element(node["element"], s.element, what);
+    yaml::require(file_, node["element"],
+                  s.element.rfind("Environmental Conditions/", 0) == 0 || s.element.rfind("Connectivity/", 0) == 0,
+                  what + ": element '" + s.element + "' is not an Environmental Condition or Connectivity");
+    s.attribute = yaml::scalar(file_, node["attribute"], what + ": 'attribute'");
+    const odd::Attribute& a = attribute(node["attribute"], e, s.attribute, what);
+    s.value = yaml::scalar(file_, node["value"], what + ": 'value'");
+    const auto problem = check_value(a, s.value);
+    yaml::require(file_, node["value"], problem.empty(), what + ": " + problem);
+    s.environment = environment_supports(e.id, s.attribute);
+    return s;
+}
+
 void TemplateLoader::parameters(const YAML::Node& node, Template& t, const std::string& what) {
     std::set<std::string> names;
     for (const char* section : {"parameters", "perturbations"}) {
@@ -252,7 +314,8 @@ void TemplateLoader::parameters(const YAML::Node& node, Template& t, const std::
 ParameterDomain TemplateLoader::parameter(const std::string& name, const YAML::Node& spec, const Template& t,
                                           const std::string& what) {
     const std::string w = what + ": parameter '" + name + "'";
-    yaml::require(file_, spec, spec.IsMap() && spec["kind"], w + " needs a 'kind' (ego_speed, asset or map)");
+    yaml::require(file_, spec, spec.IsMap() && spec["kind"],
+                  w + " needs a 'kind' (ego_speed, asset, map, choice or degraded_mode)");
     yaml::check_keys(file_, spec, {"kind", "values", "limit_fractions", "actor", "from", "attribute"}, w);
     ParameterDomain p;
     p.name = name;
@@ -325,8 +388,35 @@ ParameterDomain TemplateLoader::parameter(const std::string& name, const YAML::N
         p.element = source->element;
         p.attribute = yaml::scalar(file_, spec["attribute"], w + ": 'attribute'");
         p.unit = attribute(spec["attribute"], element(spec, p.element, w), p.attribute, w).unit;
+    } else if (kind == "choice") {
+        p.kind = ParameterKind::choice;
+        yaml::require(file_, spec, static_cast<bool>(spec["values"]), w + ": a choice lists its 'values'");
+        p.values = value_list(spec["values"], w + ": 'values'");
+        std::set<std::string> seen;
+        for (const auto& v : p.values) {
+            yaml::require(file_, spec["values"], seen.insert(v).second, w + ": value '" + v + "' is listed twice");
+        }
+    } else if (kind == "degraded_mode") {
+        p.kind = ParameterKind::degraded_mode;
+        yaml::require(file_, spec, !set_.degraded_modes.empty(),
+                      w + ": the template file declares no 'degraded_modes'");
+        if (spec["values"]) {
+            for (const auto& id : value_list(spec["values"], w + ": 'values'")) {
+                const auto m = std::find_if(set_.degraded_modes.begin(), set_.degraded_modes.end(),
+                                            [&](const DegradedMode& d) { return d.id == id; });
+                yaml::require(file_, spec["values"], m != set_.degraded_modes.end(),
+                              w + ": '" + id + "' is not one of the file's degraded_modes");
+                p.modes.push_back(*m);
+            }
+        } else {
+            p.modes = set_.degraded_modes;
+        }
+        for (const auto& m : p.modes) {
+            p.values.push_back(m.id);
+        }
     } else {
-        yaml::fail(file_, spec["kind"], w + ": kind must be ego_speed, asset or map, not '" + kind + "'");
+        yaml::fail(file_, spec["kind"],
+                   w + ": kind must be ego_speed, asset, map, choice or degraded_mode, not '" + kind + "'");
     }
     return p;
 }
@@ -433,6 +523,7 @@ const char* to_string(Lateral lateral) {
     case Lateral::platform_edge: return "platform_edge";
     case Lateral::beside_track: return "beside_track";
     case Lateral::crossing_approach: return "crossing_approach";
+    case Lateral::adjacent_track: return "adjacent_track";
     }
     return "?";
 }
@@ -443,6 +534,8 @@ const char* to_string(ParameterKind kind) {
     case ParameterKind::actor_asset: return "asset";
     case ParameterKind::map_value: return "map";
     case ParameterKind::perturbation: return "perturbation";
+    case ParameterKind::choice: return "choice";
+    case ParameterKind::degraded_mode: return "degraded_mode";
     }
     return "?";
 }

@@ -7,6 +7,7 @@
 // odd_profile.json:
 //   {"railodd": {...}, "taxonomy": {"name", "version", "file"},
 //    "route": {"description", "length_m", "tracks", "along_route" (only when true)},
+//    "track_ends": [[TRACK, FROM-NODE, TO-NODE, FROM-HEADING, TO-HEADING], ...] (whole networks),
 //    "elements": [{"odd_element": PATH, "id": TAXONOMY-ID, "attributes": {NAME: number|string|bool, ...},
 //                  "road_id": "12", "s_start": m, "s_end": m, "track": EDGE, "chainage_start": m,
 //                  "chainage_end": m, "point": bool, "osm_ids": ["way:1", "node:2"],
@@ -16,6 +17,7 @@
 // s is along the OpenDRIVE road `road_id`; chainage along the route (the track
 // graph edge `track`'s fitted centreline when no route is chosen).
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <deque>
@@ -60,6 +62,18 @@ struct Unparsed {
     std::string reason;
 };
 
+// Where a track (graph edge) of a whole-network profile starts and ends: the
+// OSM node at each end and the heading (rad, in the map's projected frame) of
+// travel towards growing chainage there. A scenario uses them to run on across
+// a switch onto the track that continues this one.
+struct TrackEnd {
+    std::size_t track = 0;
+    std::int64_t from_node = 0;
+    std::int64_t to_node = 0;
+    double from_heading = 0.0;
+    double to_heading = 0.0;
+};
+
 struct OddProfile {
     std::string taxonomy_name;
     std::string taxonomy_version;
@@ -74,6 +88,7 @@ struct OddProfile {
     std::vector<Unparsed> unparsed;
     nlohmann::ordered_json summary;      // km per radius / gradient class, counts, speed profile
     bool along_route = false; // chainage runs along one route (--from/--to, --relation), not per track
+    std::vector<TrackEnd> track_ends; // by track; empty along a route (and in profiles written before them)
 };
 
 nlohmann::ordered_json to_json(const OddProfile& profile);

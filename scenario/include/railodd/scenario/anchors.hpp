@@ -16,8 +16,10 @@
 namespace railodd::scenario {
 
 // Chainage to lane positions. A line is one track (graph edge) of a whole-map
-// profile, or the whole route of a route profile; the horizontal-geometry
-// elements tile every line, so they carry the road and s of each chainage.
+// profile, continued at both ends across switches onto the smoothest
+// following track (line_index.cpp), or the whole route of a route profile;
+// the horizontal-geometry elements tile every line, so they carry the road
+// and s of each chainage.
 class LineIndex {
 public:
     explicit LineIndex(const odd::OddProfile& profile);
@@ -41,6 +43,7 @@ private:
     bool along_route_ = false;
     std::map<std::size_t, std::vector<Piece>> lines_; // by chainage
     const Piece* piece(std::size_t line, double chainage) const;
+    std::vector<Piece> extend(const std::vector<odd::TrackEnd>& ends, const odd::TrackEnd& own) const;
 };
 
 struct Anchor {

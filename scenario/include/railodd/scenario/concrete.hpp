@@ -104,6 +104,10 @@ struct ConcreteScenario {
     // anchor is too short for the actors' moves to be timed by the ego's
     // distance alone (ActorTemplate::hazard_before_m).
     double ego_start_delay_s = 0.0;
+    // What OpenSCENARIO 1.x has no action for (a degraded mode's GNSS or
+    // radio loss, a signal's aspect): name -> value, declared as string
+    // parameters and written to the behaviour file's `conditions`.
+    std::vector<std::pair<std::string, std::string>> conditions;
     double stop_time_s = 60.0; // simulation stops at this time ...
     std::optional<LanePlacement> ego_end; // ... or when the ego reaches this place
 };

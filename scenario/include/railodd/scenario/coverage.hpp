@@ -7,6 +7,7 @@
 #include "railodd/odd/profile.hpp"
 #include "railodd/odd/taxonomy.hpp"
 #include "railodd/scenario/generator.hpp"
+#include "railodd/scenario/templates.hpp"
 
 #include <cstddef>
 #include <string>
@@ -23,6 +24,7 @@ struct CoverageItem {
     std::string value_class;
     std::size_t on_route = 0;  // profile elements with it
     std::size_t scenarios = 0; // scenarios exercising it
+    std::string reason;        // why no scenario does (gaps only; coverage_gaps.cpp)
 };
 
 struct Coverage {
@@ -36,8 +38,10 @@ struct Coverage {
     std::size_t scenarios = 0;
 };
 
+// With the templates, every gap says why: no anchor on the route (and the
+// skip reason), excluded by the spec, no template, not drawn, constraints.
 Coverage compute_coverage(const odd::OddProfile& profile, const odd::Taxonomy& taxonomy, const Generation& generation,
-                          const odd::OddSpec* spec);
+                          const odd::OddSpec* spec, const TemplateSet* templates = nullptr);
 
 nlohmann::ordered_json coverage_json(const Coverage& c);
 std::string coverage_table(const Coverage& c);

@@ -19,7 +19,7 @@
 namespace railodd::scenario {
 
 struct GenerateOptions {
-    Strategy strategy = Strategy::pairwise;
+    Strategy strategy = Strategy::cover;
     std::size_t count = 0;     // random: rows per template (required); full / pairwise: 0 = all
     std::uint64_t seed = 1;
     std::size_t max_anchors = 0; // per template, spread evenly along the route; 0 = all
@@ -56,7 +56,10 @@ struct TemplateRun {
     std::vector<std::size_t> sizes;
     std::size_t rows = 0;
     bool every_valid_row = false; // random: fewer valid rows than --count, all of them taken
-    PairStats pairs;
+    PairStats pairs;          // cover: pairs of the parameters alone
+    // cover: what the same template needs under the other strategies.
+    double full_factorial = 0.0;
+    std::size_t pairwise_rows = 0;
 };
 
 struct Generation {

@@ -1,8 +1,10 @@
 #pragma once
 // Instantiation strategies over a template's parameter dimensions
 // (docs/scenarios.md "Strategies"): full factorial, pairwise (every feasible
-// pair of values in some row, with few rows) and seeded random. Rows are
-// value indices per dimension; a validity predicate encodes the constraints.
+// pair of values in some row, with few rows), seeded random and cover (the
+// anchors a set cover of the route's ODD chose, with pairwise coverage of the
+// parameters). Rows are value indices per dimension, the anchor first; a
+// validity predicate encodes the constraints.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -11,7 +13,7 @@
 
 namespace railodd::scenario {
 
-enum class Strategy { full, pairwise, random };
+enum class Strategy { full, pairwise, random, cover };
 const char* to_string(Strategy s);
 Strategy strategy_from(const std::string& name); // throws std::invalid_argument
 
@@ -36,6 +38,25 @@ std::vector<Row> full_factorial(const std::vector<std::size_t>& sizes, const Val
 // A greedy covering array of strength 2 (AETG-style, deterministic): every
 // pair of values of two dimensions that a valid row can hold is in some row.
 std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity& valid);
+
+// Rows for the cover strategy: pairwise over dimensions 1.. (the parameters;
+// pairs with the anchor, dimension 0, are not sought) and every anchor of
+// `anchors` in at least one row. Rows take the chosen anchors in turn; a row
+// no chosen anchor admits takes the first anchor that does.
+std::vector<Row> cover_rows(const std::vector<std::size_t>& sizes, const Validity& valid,
+                            const std::vector<std::size_t>& anchors);
+
+// Whether some anchor 0..anchors-1 admits the (partial) parameter row.
+bool any_anchor(std::size_t anchors, const Validity& valid, const Row& params);
+
+// The anchors to use, per template, so that every item (an ODD element or
+// class, numbered 0..item_count-1) some anchor exercises is exercised by a
+// chosen one: greedy set cover (the candidate adding most uncovered items
+// first; ties in an order shuffled with `seed`). candidates[t][a] lists the
+// items anchor a of template t exercises; the result lists anchor indices per
+// template, ascending.
+std::vector<std::vector<std::size_t>> choose_anchors(const std::vector<std::vector<std::vector<std::size_t>>>& candidates,
+                                                     std::size_t item_count, std::uint64_t seed);
 
 // `count` distinct valid rows drawn uniformly with a 64-bit Mersenne Twister
 // seeded with `seed`; the same on every platform. Fewer when fewer exist: up

@@ -48,7 +48,9 @@ struct ContextRequirement : ElementMatch {
 // Where an actor stands, across the track: on the rail lane, at the platform
 // edge (on the platform's side), beside the track, or on the road approaching
 // a level crossing.
-enum class Lateral { on_track, platform_edge, beside_track, crossing_approach };
+// adjacent_track: where a neighbouring track of a double line lies (4.0 m
+// centre to centre), on the platform's side or the left.
+enum class Lateral { on_track, platform_edge, beside_track, crossing_approach, adjacent_track };
 const char* to_string(Lateral lateral);
 
 struct EgoTemplate {
@@ -56,6 +58,9 @@ struct EgoTemplate {
     double run_up_m = 800.0;  // start this far before the anchor (less where the track begins)
     double min_run_up_m = 100.0; // anchors with less track before them are skipped
     double overrun_m = 200.0; // the run ends this far past the anchor
+    // Or the train stops this far short of the anchor (a buffer stop, the
+    // end of a platform): the run ends there and needs no track beyond.
+    std::optional<double> stop_before_m;
 };
 
 struct ActorTemplate {
@@ -78,6 +83,29 @@ enum class ParameterKind {
     actor_asset,  // an asset id for an actor: every asset under its class, or a list
     map_value,    // bound to an attribute of the anchor or of a context element
     perturbation, // an Environmental Conditions attribute value
+    choice,       // one of a list of words (a signal's aspect): an OpenSCENARIO string parameter
+    degraded_mode, // one of the template set's degraded modes (DegradedMode)
+};
+
+// One ODD value a degraded mode stands for. Values with an OpenSCENARIO
+// mapping (environment.hpp) set the scenario's environment; the others
+// (GNSS, train radio, a dirty lens) are carried as parameters and in the
+// behaviour file.
+struct ModeSetting {
+    std::string element;   // taxonomy path
+    std::string attribute;
+    std::string value;
+    bool environment = false; // applied to the OpenSCENARIO environment
+};
+
+// A degraded operating mode (templates file, `degraded_modes`): perception,
+// positioning, communication or adhesion, with the ODD values it stands for.
+struct DegradedMode {
+    std::string id;
+    std::string family; // perception, positioning, communication, adhesion, none
+    std::string text;   // for scenario texts
+    std::vector<ModeSetting> sets;
+    int line = 0;
 };
 const char* to_string(ParameterKind kind);
 
@@ -91,6 +119,7 @@ struct ParameterDomain {
     std::string element;                  // map_value, perturbation: taxonomy path
     std::string attribute;                // map_value, perturbation
     std::string unit;                     // from the taxonomy, for texts
+    std::vector<DegradedMode> modes;      // degraded_mode: per value
     int line = 0;
 };
 
@@ -117,6 +146,7 @@ struct Template {
 
 struct TemplateSet {
     std::string source;
+    std::vector<DegradedMode> degraded_modes;
     std::vector<Template> templates;
 };
 

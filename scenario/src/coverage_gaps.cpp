@@ -1,0 +1,161 @@
+// A gap is only useful with its reason: an engineer acts differently on
+// "the route has no such place", "the places are too short for a run",
+// "no template tests it" and "the ODD excludes it".
+#include "coverage_gaps.hpp"
+
+#include "attribute_values.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace railodd::scenario {
+
+namespace {
+
+bool under(const std::string& path, const std::string& element) {
+    return path == element || path.rfind(element + "/", 0) == 0;
+}
+
+std::string text_of(const odd::AttributeValue& v) {
+    if (const double* x = std::get_if<double>(&v)) {
+        return format_number(*x);
+    }
+    if (const bool* b = std::get_if<bool>(&v)) {
+        return *b ? "true" : "false";
+    }
+    return std::get<std::string>(v);
+}
+
+// Whether the profile element is the item: its element, and the class of the
+// item's attribute.
+bool is_item(const odd::TaggedElement& e, const CoverageItem& item, const odd::Taxonomy& tax) {
+    if (e.element != item.element) {
+        return false;
+    }
+    if (item.attribute.empty()) {
+        return true;
+    }
+    const auto* v = e.find(item.attribute);
+    const odd::Element* el = tax.find(e.element);
+    const odd::Attribute* a = el ? tax.attribute(*el, item.attribute) : nullptr;
+    return v && a && value_class(*a, text_of(*v)) == item.value_class;
+}
+
+// Whether the spec leaves the item outside the declared ODD.
+bool excluded_by(const odd::OddSpec& spec, const CoverageItem& item, const odd::Taxonomy& tax) {
+    const odd::ElementConstraint* e = nullptr;
+    for (const auto& c : spec.elements) {
+        if (under(item.element, c.path) && (!e || c.path.size() > e->path.size())) {
+            e = &c;
+        }
+    }
+    if (!e) {
+        return !spec.unlisted_inside;
+    }
+    if (!e->allowed) {
+        return true;
+    }
+    const odd::AttributeConstraint* c = item.attribute.empty() ? nullptr : e->find(item.attribute);
+    const odd::Element* el = tax.find(item.element);
+    const odd::Attribute* a = el && c ? tax.attribute(*el, item.attribute) : nullptr;
+    if (!a) {
+        return false;
+    }
+    const auto classes = allowed_classes(*c, *a);
+    return std::find(classes.begin(), classes.end(), item.value_class) == classes.end();
+}
+
+// Whether some template varies a value of the item (a perturbation, a
+// degraded mode's setting, an asset's attribute).
+bool varied_by(const TemplateSet& templates, const CoverageItem& item, const odd::Taxonomy& tax) {
+    const odd::Element* el = tax.find(item.element);
+    const odd::Attribute* a = el && !item.attribute.empty() ? tax.attribute(*el, item.attribute) : nullptr;
+    auto holds = [&](const std::string& element, const std::string& attribute, const std::string& value) {
+        return under(element, item.element) &&
+               (item.attribute.empty() || (attribute == item.attribute && a && value_class(*a, value) == item.value_class));
+    };
+    for (const auto& t : templates.templates) {
+        for (const auto& p : t.parameters) {
+            for (const auto& v : p.values) {
+                if (p.kind == ParameterKind::perturbation && holds(p.element, p.attribute, v)) {
+                    return true;
+                }
+            }
+            for (const auto& m : p.modes) {
+                for (const auto& s : m.sets) {
+                    if (holds(s.element, s.attribute, s.value)) {
+                        return true;
+                    }
+                }
+            }
+        }
+    }
+    return false;
+}
+
+std::string route_gap(const CoverageItem& item, const odd::OddProfile& profile, const odd::Taxonomy& tax,
+                      const Generation& g, const TemplateSet& templates) {
+    std::vector<std::string> anchored, drawn_none;
+    std::string skip;
+    std::size_t skipped = 0;
+    for (std::size_t t = 0; t < templates.templates.size() && t < g.runs.size(); ++t) {
+        const Template& tm = templates.templates[t];
+        if (!under(item.element, tm.anchor.element)) {
+            continue;
+        }
+        anchored.push_back(tm.id);
+        for (const auto& s : g.runs[t].skipped) {
+            if (is_item(profile.elements[s.element], item, tax)) {
+                ++skipped;
+                skip = skip.empty() ? s.reason : skip;
+            }
+        }
+        if (g.runs[t].anchors > 0) {
+            drawn_none.push_back(tm.id);
+        }
+    }
+    if (skipped > 0) {
+        return "no anchor on the route: " + std::to_string(skipped) + " place(s) skipped, e.g. " + skip;
+    }
+    if (!drawn_none.empty()) {
+        return "not drawn: the strategy chose no anchor of " + drawn_none.front() + " there (--count, --max-anchors)";
+    }
+    if (!anchored.empty()) {
+        return "no template for this class: " + anchored.front() + " anchors here but its conditions exclude it";
+    }
+    return "no template anchors on this element, and no scenario's anchor lies on it";
+}
+
+} // namespace
+
+void explain_gaps(Coverage& c, const odd::OddProfile& profile, const odd::Taxonomy& taxonomy,
+                  const Generation& generation, const TemplateSet* templates, const odd::OddSpec* spec) {
+    for (auto& item : c.route) {
+        if (item.scenarios > 0) {
+            continue;
+        }
+        if (spec && excluded_by(*spec, item, taxonomy)) {
+            item.reason = "excluded by the ODD spec";
+        } else if (templates) {
+            item.reason = route_gap(item, profile, taxonomy, generation, *templates);
+        }
+    }
+    for (auto& item : c.spec) {
+        if (item.scenarios > 0) {
+            continue;
+        }
+        const bool infrastructure = item.element.rfind("Scenery/", 0) == 0 ||
+                                    item.element.rfind("Operational Conditions/", 0) == 0;
+        if (infrastructure && item.on_route == 0) {
+            item.reason = not_on_route;
+        } else if (item.on_route > 0 && templates) {
+            item.reason = route_gap(item, profile, taxonomy, generation, *templates);
+        } else if (templates) {
+            item.reason = varied_by(*templates, item, taxonomy)
+                              ? "not drawn: a template varies it, but no chosen row (constraints, --count) holds it"
+                              : "no template varies it";
+        }
+    }
+}
+
+} // namespace railodd::scenario

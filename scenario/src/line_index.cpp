@@ -1,0 +1,212 @@
+// Chainage to lane positions along one track, run on across its ends. A
+// track of a whole network ends at every switch, so a scenario anchored on a
+// switch, a short siding or a buffer stop would have no run-up: the line is
+// continued through the track ends of the profile (`track_ends`), at each end
+// onto the track that continues this one most smoothly (heading change under
+// max_turn_rad), as a train would run through the switch. The continuation
+// lies at chainages below the track's start and beyond its end, so the
+// track's own chainages (and every element on it) keep their values.
+#include "railodd/scenario/anchors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+namespace railodd::scenario {
+
+namespace {
+
+constexpr const char* horizontal = "Scenery/Track geometry/Horizontal/";
+constexpr double eps = 1e-6;
+constexpr double max_extension_m = 2000.0; // beyond the longest run-up and overrun a template asks for
+constexpr double max_turn_rad = 0.35;      // ~20 deg: through a switch, never back along the other branch
+
+double turn(double a, double b) {
+    const double d = std::remainder(a - b, 2.0 * std::numbers::pi);
+    return std::abs(d);
+}
+
+// A track entered at `node` heading `heading`: the one to run onto, and
+// whether it is run against its chainage.
+struct Next {
+    std::size_t track = 0;
+    bool against = false;
+};
+
+std::optional<Next> continuation(const std::vector<odd::TrackEnd>& ends, std::int64_t node, double heading,
+                                 bool forward, const std::set<std::size_t>& used) {
+    std::optional<Next> best;
+    double best_turn = max_turn_rad;
+    for (const auto& t : ends) {
+        if (used.contains(t.track)) {
+            continue;
+        }
+        // Running forward (beyond the end) a track is entered at its start
+        // with its own direction, or at its end against it; backwards (before
+        // the start) the other way round.
+        for (const bool against : {false, true}) {
+            const bool at_from = forward != against;
+            if ((at_from ? t.from_node : t.to_node) != node) {
+                continue;
+            }
+            const double h = (at_from ? t.from_heading : t.to_heading) + (against ? std::numbers::pi : 0.0);
+            if (const double d = turn(h, heading); d < best_turn - 1e-9) {
+                best_turn = d;
+                best = Next{t.track, against};
+            }
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.along_route) {
+    for (const auto& e : profile.elements) {
+        if (e.point || e.element.rfind(horizontal, 0) != 0) {
+            continue;
+        }
+        lines_[line_of(e)].push_back({e.chainage_start, e.chainage_end, e.road_id, e.s_start, e.s_end, e.reversed});
+    }
+    for (auto& [line, pieces] : lines_) {
+        std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
+    }
+    if (along_route_ || profile.track_ends.empty()) {
+        return;
+    }
+    std::map<std::size_t, std::vector<Piece>> extended;
+    for (const auto& t : profile.track_ends) {
+        if (lines_.contains(t.track)) {
+            extended[t.track] = extend(profile.track_ends, t);
+        }
+    }
+    lines_ = std::move(extended);
+}
+
+// The pieces of `own` continued before its start and beyond its end.
+std::vector<LineIndex::Piece> LineIndex::extend(const std::vector<odd::TrackEnd>& ends,
+                                                const odd::TrackEnd& own) const {
+    std::vector<Piece> out = lines_.at(own.track);
+    for (const bool forward : {false, true}) {
+        std::set<std::size_t> used{own.track};
+        std::int64_t node = forward ? own.to_node : own.from_node;
+        double heading = forward ? own.to_heading : own.from_heading;
+        double at = forward ? end(own.track) : start(own.track); // where the next track joins, on this line
+        double added = 0.0;
+        while (added < max_extension_m) {
+            const auto next = continuation(ends, node, heading, forward, used);
+            if (!next || !lines_.contains(next->track)) {
+                break;
+            }
+            used.insert(next->track);
+            const auto& te = *std::find_if(ends.begin(), ends.end(),
+                                           [&](const odd::TrackEnd& x) { return x.track == next->track; });
+            const double c_start = start(next->track), c_end = end(next->track);
+            // Distance from the joining end, along the continued line's direction.
+            const bool from_start = forward != next->against;
+            for (const Piece& p : lines_.at(next->track)) {
+                const double d0 = from_start ? p.c0 - c_start : c_end - p.c1;
+                const double d1 = from_start ? p.c1 - c_start : c_end - p.c0;
+                Piece q = p;
+                q.reversed = p.reversed != next->against;
+                q.c0 = forward ? at + d0 : at - d1;
+                q.c1 = forward ? at + d1 : at - d0;
+                out.push_back(q);
+            }
+            const double len = c_end - c_start;
+            at += forward ? len : -len;
+            added += len;
+            // Leaving the track at its other end.
+            const bool leave_at_to = forward != next->against;
+            node = leave_at_to ? te.to_node : te.from_node;
+            heading = (leave_at_to ? te.to_heading : te.from_heading) + (next->against ? std::numbers::pi : 0.0);
+        }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
+    return out;
+}
+
+double LineIndex::start(std::size_t line) const {
+    const auto it = lines_.find(line);
+    return it == lines_.end() ? 0.0 : it->second.front().c0;
+}
+
+double LineIndex::end(std::size_t line) const {
+    const auto it = lines_.find(line);
+    double c = 0.0;
+    if (it != lines_.end()) {
+        for (const auto& p : it->second) {
+            c = std::max(c, p.c1);
+        }
+    }
+    return c;
+}
+
+const LineIndex::Piece* LineIndex::piece(std::size_t line, double chainage) const {
+    const auto it = lines_.find(line);
+    if (it == lines_.end()) {
+        return nullptr;
+    }
+    const auto& v = it->second;
+    auto p = std::upper_bound(v.begin(), v.end(), chainage, [](double c, const Piece& q) { return c < q.c0; });
+    if (p == v.begin()) {
+        return chainage >= v.front().c0 - eps ? &v.front() : nullptr;
+    }
+    --p;
+    return chainage <= p->c1 + eps ? &*p : nullptr;
+}
+
+std::optional<LanePlacement> LineIndex::at(std::size_t line, double chainage) const {
+    const Piece* p = piece(line, chainage);
+    if (!p) {
+        return std::nullopt;
+    }
+    // A centimetre inside the piece: at a road's very end the written s can
+    // round past the road's length, which players truncate with an error.
+    const double len = p->c1 - p->c0, inside = std::min(0.01, 0.5 * len);
+    const double d = std::clamp(chainage - p->c0, inside, len - inside);
+    LanePlacement out;
+    out.road_id = p->road_id;
+    out.lane_id = -1; // rail roads carry one rail lane, right of the reference line (docs/xodr.md)
+    out.s = p->reversed ? p->s1 - d : p->s0 + d;
+    out.reversed = p->reversed;
+    return out;
+}
+
+std::vector<LanePlacement> LineIndex::waypoints(std::size_t line, double c0, double c1) const {
+    std::vector<LanePlacement> out;
+    if (auto a = at(line, c0)) {
+        out.push_back(*a);
+    }
+    const auto it = lines_.find(line);
+    if (it != lines_.end()) {
+        // Runs of one road strictly between the ends: the router needs one point on each.
+        std::string road = out.empty() ? "" : out.front().road_id;
+        double run0 = c0;
+        for (const auto& p : it->second) {
+            if (p.c1 <= c0 + eps || p.c0 >= c1 - eps || p.road_id == road) {
+                continue;
+            }
+            run0 = std::max(p.c0, c0);
+            double run1 = run0;
+            for (const auto& q : it->second) {
+                if (q.road_id == p.road_id && q.c0 >= run0 - eps && q.c0 < c1) {
+                    run1 = std::max(run1, std::min(q.c1, c1));
+                }
+            }
+            road = p.road_id;
+            if (auto w = at(line, 0.5 * (run0 + run1)); w && w->road_id == road) {
+                out.push_back(*w);
+            }
+        }
+    }
+    if (auto b = at(line, c1)) {
+        if (out.empty() || b->road_id != out.back().road_id || std::abs(b->s - out.back().s) > eps) {
+            out.push_back(*b);
+        }
+    }
+    return out;
+}
+
+} // namespace railodd::scenario
