@@ -212,18 +212,27 @@ TEST_F(ScenarioSampleRoute, AnchorsSatisfyTheirTemplates) {
         } else if (t == "platform_edge_passenger") {
             EXPECT_EQ(a["element"], "Scenery/Stations and stops/Platform");
         }
-        // The anchor is a profile element: same road, s and OSM ids.
+        // The anchor is a profile element: same track, chainage and OSM ids
+        // (the road can be the next one where the element lies at a road's end).
         bool found = false;
         for (const auto& e : profile["elements"]) {
+            const bool at_start = std::abs(e["chainage_start"].get<double>() - a["chainage"].get<double>()) < 1e-6;
+            const bool at_end = std::abs(e["chainage_end"].get<double>() - a["chainage"].get<double>()) < 1e-6;
+            const bool within = e["chainage_start"].get<double>() <= a["chainage"].get<double>() + 1e-6 &&
+                                e["chainage_end"].get<double>() >= a["chainage"].get<double>() - 1e-6;
             found = found || (e["odd_element"] == a["element"] && e["osm_ids"] == a["osm_ids"] &&
-                              e["road_id"] == a["road_id"]);
+                              e["track"] == a["track"] && (at_start || at_end || within));
         }
         EXPECT_TRUE(found) << s["id"];
         std::set<std::string> sources;
         for (const auto& v : s["odd_elements"]) {
             sources.insert(v["source"].get<std::string>());
         }
-        EXPECT_EQ(sources, (std::set<std::string>{"asset", "map", "parameter", "perturbation"})) << s["id"];
+        EXPECT_TRUE(sources.contains("map") && sources.contains("parameter")) << s["id"];
+        for (const auto& src : sources) {
+            EXPECT_TRUE((std::set<std::string>{"asset", "map", "parameter", "perturbation", "degraded_mode"}).contains(src))
+                << s["id"] << " " << src;
+        }
     }
     for (const char* t : {"curve_crossing_street_vehicle", "level_crossing_person", "platform_edge_passenger",
                           "tunnel_exit_animal", "curve_track_worker"}) {
@@ -237,13 +246,17 @@ TEST_F(ScenarioSampleRoute, PairwiseCoversEveryFeasiblePair) {
     const json c = read_json(out / "coverage.json");
     ASSERT_FALSE(c["templates"].empty());
     for (const auto& t : c["templates"]) {
-        EXPECT_GT(t["pairs_feasible"].get<int>(), 0) << t["template"];
+        if (t["anchors"].get<int>() > 0) {
+            EXPECT_GT(t["pairs_feasible"].get<int>(), 0) << t["template"];
+        }
         EXPECT_EQ(t["pairs_covered"], t["pairs_feasible"]) << t["template"];
     }
     const json full = (scenarios(root() / "full", "--strategy full"), read_json(root() / "full" / "coverage.json"));
     EXPECT_LT(c["scenarios"].get<int>(), full["scenarios"].get<int>());
     EXPECT_GT(c["route"]["covered"].get<int>(), 0);
-    EXPECT_FALSE(c["gaps"].empty()); // signals and switches: no default template anchors there
+    for (const auto& g : c["gaps"]) {
+        EXPECT_FALSE(g["reason"].get<std::string>().empty()) << g.dump();
+    }
 }
 
 TEST_F(ScenarioSampleRoute, DeterministicForASeed) {

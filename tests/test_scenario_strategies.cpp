@@ -75,7 +75,7 @@ const std::vector<std::size_t> sizes_3425{3, 4, 2, 5};
 } // namespace
 
 TEST(ScenarioStrategies, NamesRoundTrip) {
-    for (const auto s : {Strategy::full, Strategy::pairwise, Strategy::random}) {
+    for (const auto s : {Strategy::full, Strategy::pairwise, Strategy::random, Strategy::cover}) {
         EXPECT_EQ(strategy_from(to_string(s)), s);
     }
     EXPECT_THROW(strategy_from("exhaustive"), std::invalid_argument);
@@ -238,4 +238,98 @@ TEST(ScenarioStrategies, RandomRowsCompletesSparseDrawsFromTheValidRows) {
     EXPECT_FALSE(all);
     EXPECT_EQ(random_rows(sizes, valid, 50, 11, &all).size(), 3u);
     EXPECT_TRUE(all);
+}
+
+// --- cover: a set cover of the route's ODD, pairwise over the parameters ----
+
+// Every item some candidate exercises is exercised by a chosen one, and the
+// greedy choice is no larger than needed on sets where the optimum is known.
+TEST(ScenarioStrategies, ChooseAnchorsCoversEveryReachableItem) {
+    // Template 0: anchors {0,1}, {1,2}, {3}; template 1: {0,1,2,3}, {4}, {}.
+    const std::vector<std::vector<std::vector<std::size_t>>> candidates = {
+        {{0, 1}, {1, 2}, {3}},
+        {{0, 1, 2, 3}, {4}, {}},
+    };
+    for (std::uint64_t seed : {1u, 2u, 3u, 99u}) {
+        const auto chosen = choose_anchors(candidates, 6, seed); // item 5: no anchor exercises it
+        ASSERT_EQ(chosen.size(), 2u);
+        std::set<std::size_t> covered;
+        std::size_t n = 0;
+        for (std::size_t t = 0; t < chosen.size(); ++t) {
+            EXPECT_TRUE(std::is_sorted(chosen[t].begin(), chosen[t].end()));
+            for (const auto a : chosen[t]) {
+                covered.insert(candidates[t][a].begin(), candidates[t][a].end());
+                ++n;
+            }
+        }
+        EXPECT_EQ(covered, (std::set<std::size_t>{0, 1, 2, 3, 4})) << "seed " << seed;
+        EXPECT_EQ(n, 2u) << "the four-item anchor and the one with item 4 suffice";
+        EXPECT_EQ(chosen, choose_anchors(candidates, 6, seed)) << "deterministic for a seed";
+    }
+}
+
+TEST(ScenarioStrategies, ChooseAnchorsTiesFollowTheSeed) {
+    // Ten anchors that each exercise the same single item: one is chosen,
+    // which one depends on the seed only.
+    const std::vector<std::vector<std::vector<std::size_t>>> candidates = {std::vector<std::vector<std::size_t>>(10, {0})};
+    std::set<std::size_t> picked;
+    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+        const auto chosen = choose_anchors(candidates, 1, seed);
+        ASSERT_EQ(chosen[0].size(), 1u);
+        picked.insert(chosen[0][0]);
+    }
+    EXPECT_GT(picked.size(), 3u) << "ties are broken in a seeded order, not always the first";
+    EXPECT_TRUE(choose_anchors({{}}, 0, 1)[0].empty());
+}
+
+// Rows hold every chosen anchor and every feasible pair of the parameters,
+// never a row the validity refuses, with far fewer rows than pairwise over
+// the anchors too.
+TEST(ScenarioStrategies, CoverRowsHoldTheChosenAnchorsAndEveryParameterPair) {
+    const std::vector<std::size_t> sizes = {30, 3, 4, 2, 5}; // 30 anchors, four parameters
+    // Anchors 0-9 allow only parameter 0's values 0-1 (a low speed limit).
+    const Validity valid = [](const Row& r) { return r[0] == kUnset || r[1] == kUnset || r[0] >= 10 || r[1] < 2; };
+    const std::vector<std::size_t> chosen = {2, 11, 17};
+    const auto rows = cover_rows(sizes, valid, chosen);
+    expect_valid_rows(rows, sizes, valid);
+    std::set<std::size_t> anchors;
+    std::vector<Row> params;
+    for (const auto& r : rows) {
+        anchors.insert(r[0]);
+        params.emplace_back(r.begin() + 1, r.end());
+    }
+    for (const auto a : chosen) {
+        EXPECT_TRUE(anchors.contains(a)) << "chosen anchor " << a << " in no row";
+    }
+    const std::vector<std::size_t> psizes(sizes.begin() + 1, sizes.end());
+    const auto covered = pairs_of(params);
+    for (const auto& p : all_pairs(psizes)) {
+        EXPECT_TRUE(covered.contains(p)) << show(p);
+    }
+    const std::size_t pairwise_rows = pairwise(sizes, valid).size();
+    EXPECT_LE(3 * rows.size(), pairwise_rows) << rows.size() << " cover rows, " << pairwise_rows << " pairwise";
+    // A parameter value no chosen anchor admits still gets a row, at an anchor that does.
+    const auto low = cover_rows(sizes, valid, {2});
+    bool high_speed = false;
+    for (const auto& r : low) {
+        high_speed = high_speed || r[1] == 2;
+    }
+    EXPECT_TRUE(high_speed);
+    EXPECT_TRUE(any_anchor(30, valid, {2, 0, 0, 0}));
+    EXPECT_FALSE(any_anchor(10, valid, {2, 0, 0, 0}));
+    EXPECT_TRUE(cover_rows(sizes, valid, {}).empty());
+}
+
+TEST(ScenarioStrategies, CoverRowsWithOneParameterTakeEachValue) {
+    const std::vector<std::size_t> sizes = {4, 3};
+    const Validity anything = [](const Row&) { return true; };
+    const auto rows = cover_rows(sizes, anything, {1, 3});
+    std::set<std::size_t> values, anchors;
+    for (const auto& r : rows) {
+        values.insert(r[1]);
+        anchors.insert(r[0]);
+    }
+    EXPECT_EQ(values, (std::set<std::size_t>{0, 1, 2}));
+    EXPECT_EQ(anchors, (std::set<std::size_t>{1, 3}));
+    EXPECT_EQ(rows.size(), 3u);
 }

@@ -110,6 +110,13 @@ void apply_mode(const TemplateContext& ctx, const DegradedMode& m, ScenarioRecor
             apply_perturbation(sc.environment, el->id, set.attribute, set.value);
             declare_environment(sc, el->id, set.attribute);
         } else {
+            // No OpenSCENARIO action: a string parameter (GNSS availability ->
+            // GNSSAvailability, Lens condition / condition -> LensCondition)
+            // a player or controller can read, and the behaviour file.
+            const std::string leaf = set.element.substr(set.element.rfind('/') + 1);
+            const bool says_it = leaf.size() >= set.attribute.size() &&
+                                 leaf.compare(leaf.size() - set.attribute.size(), set.attribute.size(), set.attribute) == 0;
+            declare(sc, camel(says_it ? leaf : leaf + " " + set.attribute).c_str(), "string", set.value);
             sc.conditions.emplace_back(set.element + " " + set.attribute, set.value);
         }
         rec.odd_elements.push_back({set.element, "", "", "", "degraded_mode"});
