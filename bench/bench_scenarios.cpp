@@ -186,6 +186,9 @@ void run_generate(benchmark::State& state, Strategy strategy, std::size_t count,
 
 // `railodd scenarios` default: pairwise over every anchor.
 void BM_GeneratePairwise(benchmark::State& state) { run_generate(state, Strategy::pairwise, 0, 0); }
+// `--strategy cover` (the default): the set cover over all anchors, pairwise
+// rows of the parameters, and pairwise over all anchors for the report.
+void BM_GenerateCover(benchmark::State& state) { run_generate(state, Strategy::cover, 0, 0); }
 // `--strategy random --count 100`.
 void BM_GenerateRandom100(benchmark::State& state) { run_generate(state, Strategy::random, 100, 0); }
 // `--max-anchors 50`: pairwise over 50 anchors per template, spread along the route.
@@ -253,6 +256,7 @@ void BM_XoscText(benchmark::State& state) {
 
 } // namespace
 
+BENCHMARK(BM_GenerateCover)->Arg(200)->Arg(600)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GeneratePairwise)->Arg(200)->Arg(600)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GenerateRandom100)->Arg(200)->Arg(600)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GeneratePairwiseMax50)->Arg(200)->Arg(2000)->Unit(benchmark::kMillisecond);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <variant>
 
 namespace railodd::scenario {
 
@@ -130,6 +132,36 @@ std::optional<std::string> place_run(const odd::OddProfile& profile, const std::
     return std::nullopt;
 }
 
+// A road user approaching a crossing starts on the crossing road's own lane;
+// where that road is not in the map (a footway outside the road corridor, a
+// crossing inside a road junction) it would stand beside the railway instead,
+// which is not the scenario: the place is skipped.
+std::optional<std::string> road_user_place(const odd::TaggedElement& e, const Template& t) {
+    for (const auto& actor : t.actors) {
+        const bool approaches = actor.place == Lateral::crossing_approach ||
+                                (actor.move_to && *actor.move_to == Lateral::crossing_approach);
+        if (!approaches) {
+            continue;
+        }
+        if (!e.find("crossing_road_id")) {
+            return "the crossing's road is not in the map: " + actor.name + " has no road to approach on";
+        }
+        // A vehicle needs a driving lane; a person walks on a sidewalk or, without one, a driving lane.
+        const bool vehicle = under(actor.asset_class, "Dynamic Elements/Road vehicle");
+        bool lane = false;
+        for (const char* k : {"crossing_road_forward_lane", "crossing_road_backward_lane", "crossing_road_forward_walk",
+                              "crossing_road_backward_walk"}) {
+            const auto* v = e.find(k);
+            const bool walk = std::string_view(k).ends_with("walk");
+            lane = lane || (v && std::holds_alternative<double>(*v) && std::get<double>(*v) != 0.0 && !(vehicle && walk));
+        }
+        if (!lane) {
+            return "the crossing's road has no lane " + actor.name + " can approach on";
+        }
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 bool matches(const odd::TaggedElement& e, const ElementMatch& match) {
@@ -171,7 +203,9 @@ Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, c
         if (!complete) {
             continue; // not a place for this template; only places that match are reported
         }
-        if (auto why = place_run(profile, on_line, lines, t, ego_half_length_m, a)) {
+        if (auto why = road_user_place(e, t)) {
+            out.skipped.push_back({i, std::move(*why)});
+        } else if (auto why = place_run(profile, on_line, lines, t, ego_half_length_m, a)) {
             out.skipped.push_back({i, std::move(*why)});
         } else {
             out.anchors.push_back(std::move(a));

@@ -52,6 +52,12 @@ private:
     const std::string file_;
 
     void degraded_modes(const YAML::Node& map);
+    // One per parameter kind, filling p from its spec (w names it in errors).
+    void ego_speed_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p);
+    void asset_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p);
+    void map_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p);
+    void choice_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p);
+    void mode_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p);
     ModeSetting mode_setting(const YAML::Node& node, const std::string& what);
 
     Template one(const YAML::Node& node) {
@@ -321,104 +327,124 @@ ParameterDomain TemplateLoader::parameter(const std::string& name, const YAML::N
     p.name = name;
     const auto kind = yaml::scalar(file_, spec["kind"], w + ": 'kind'");
     if (kind == "ego_speed") {
-        p.kind = ParameterKind::ego_speed;
-        const odd::Element& ego = element(spec, "Dynamic Elements/Rail vehicle/Ego train", w);
-        const odd::Attribute& speed = attribute(spec, ego, "speed", w);
-        p.unit = speed.unit;
-        yaml::require(file_, spec, static_cast<bool>(spec["values"]) != static_cast<bool>(spec["limit_fractions"]),
-                      w + " takes either 'values' (km/h) or 'limit_fractions' (of the local speed limit)");
-        if (spec["values"]) {
-            p.values = value_list(spec["values"], w + ": 'values'");
-            for (const auto& v : p.values) {
-                const auto problem = check_value(speed, v);
-                yaml::require(file_, spec["values"], problem.empty() && parse_number(v) > 0.0,
-                              w + ": speed " + (problem.empty() ? v + " must be positive" : problem));
-            }
-        } else {
-            for (const auto& v : value_list(spec["limit_fractions"], w + ": 'limit_fractions'")) {
-                const auto f = parse_number(v);
-                yaml::require(file_, spec["limit_fractions"], f && *f > 0.0 && *f <= 1.5,
-                              w + ": limit fraction '" + v + "' must be a number in (0, 1.5]");
-                p.limit_fractions.push_back(*f);
-                p.values.push_back(v + " x limit");
-            }
-        }
+        ego_speed_parameter(spec, w, p);
     } else if (kind == "asset") {
-        p.kind = ParameterKind::actor_asset;
-        yaml::require(file_, spec, static_cast<bool>(spec["actor"]), w + ": an asset parameter names its 'actor'");
-        p.actor = yaml::scalar(file_, spec["actor"], w + ": 'actor'");
-        const ActorTemplate* actor = nullptr;
-        for (const auto& a : t.actors) {
-            actor = a.name == p.actor ? &a : actor;
-        }
-        const std::string klass = p.actor == "Ego" ? t.ego.asset_class : actor ? actor->asset_class : "";
-        yaml::require(file_, spec["actor"], p.actor == "Ego" || actor, w + ": the template has no actor '" + p.actor + "'");
-        if (spec["values"]) {
-            p.values = value_list(spec["values"], w + ": 'values'");
-            for (const auto& id : p.values) {
-                const Asset* a = cat_.find(id);
-                yaml::require(file_, spec["values"], a != nullptr, w + ": asset '" + id + "' is not in the catalog " + cat_.source);
-                yaml::require(file_, spec["values"], !cat_.under(klass).empty() && (a->element == klass || a->element.rfind(klass + "/", 0) == 0),
-                              w + ": asset '" + id + "' (" + a->element + ") is not under the actor's class '" + klass + "'");
-            }
-        } else {
-            for (const Asset* a : cat_.under(klass)) {
-                p.values.push_back(a->id);
-            }
-        }
+        asset_parameter(spec, t, w, p);
     } else if (kind == "map") {
-        p.kind = ParameterKind::map_value;
-        yaml::require(file_, spec, spec["attribute"] && spec["from"], w + ": a map parameter needs 'from' and 'attribute'");
-        const auto from = yaml::scalar(file_, spec["from"], w + ": 'from'");
-        const ElementMatch* source = nullptr;
-        if (from == "anchor") {
-            source = &t.anchor;
-        } else if (from.rfind("context", 0) == 0) {
-            // "context N": one space, then a whole index ("context 0.5" or "contexts0" are not indices).
-            const double index =
-                (from.size() > 8 && from[7] == ' ' ? parse_number(from.substr(8)) : std::nullopt).value_or(-1.0);
-            yaml::require(file_, spec["from"],
-                          index >= 0 && index == std::floor(index) && index < static_cast<double>(t.context.size()),
-                          w + ": 'from' must be anchor or context N with N < " + std::to_string(t.context.size()));
-            p.context = static_cast<int>(index);
-            source = &t.context[static_cast<std::size_t>(p.context)];
-        } else {
-            yaml::fail(file_, spec["from"], w + ": 'from' must be anchor or context N, not '" + from + "'");
-        }
-        p.element = source->element;
-        p.attribute = yaml::scalar(file_, spec["attribute"], w + ": 'attribute'");
-        p.unit = attribute(spec["attribute"], element(spec, p.element, w), p.attribute, w).unit;
+        map_parameter(spec, t, w, p);
     } else if (kind == "choice") {
-        p.kind = ParameterKind::choice;
-        yaml::require(file_, spec, static_cast<bool>(spec["values"]), w + ": a choice lists its 'values'");
-        p.values = value_list(spec["values"], w + ": 'values'");
-        std::set<std::string> seen;
-        for (const auto& v : p.values) {
-            yaml::require(file_, spec["values"], seen.insert(v).second, w + ": value '" + v + "' is listed twice");
-        }
+        choice_parameter(spec, w, p);
     } else if (kind == "degraded_mode") {
-        p.kind = ParameterKind::degraded_mode;
-        yaml::require(file_, spec, !set_.degraded_modes.empty(),
-                      w + ": the template file declares no 'degraded_modes'");
-        if (spec["values"]) {
-            for (const auto& id : value_list(spec["values"], w + ": 'values'")) {
-                const auto m = std::find_if(set_.degraded_modes.begin(), set_.degraded_modes.end(),
-                                            [&](const DegradedMode& d) { return d.id == id; });
-                yaml::require(file_, spec["values"], m != set_.degraded_modes.end(),
-                              w + ": '" + id + "' is not one of the file's degraded_modes");
-                p.modes.push_back(*m);
-            }
-        } else {
-            p.modes = set_.degraded_modes;
-        }
-        for (const auto& m : p.modes) {
-            p.values.push_back(m.id);
-        }
+        mode_parameter(spec, w, p);
     } else {
         yaml::fail(file_, spec["kind"],
                    w + ": kind must be ego_speed, asset, map, choice or degraded_mode, not '" + kind + "'");
     }
     return p;
+}
+
+void TemplateLoader::ego_speed_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p) {
+    p.kind = ParameterKind::ego_speed;
+    const odd::Element& ego = element(spec, "Dynamic Elements/Rail vehicle/Ego train", w);
+    const odd::Attribute& speed = attribute(spec, ego, "speed", w);
+    p.unit = speed.unit;
+    yaml::require(file_, spec, static_cast<bool>(spec["values"]) != static_cast<bool>(spec["limit_fractions"]),
+                  w + " takes either 'values' (km/h) or 'limit_fractions' (of the local speed limit)");
+    if (spec["values"]) {
+        p.values = value_list(spec["values"], w + ": 'values'");
+        for (const auto& v : p.values) {
+            const auto problem = check_value(speed, v);
+            yaml::require(file_, spec["values"], problem.empty() && parse_number(v) > 0.0,
+                          w + ": speed " + (problem.empty() ? v + " must be positive" : problem));
+        }
+    } else {
+        for (const auto& v : value_list(spec["limit_fractions"], w + ": 'limit_fractions'")) {
+            const auto f = parse_number(v);
+            yaml::require(file_, spec["limit_fractions"], f && *f > 0.0 && *f <= 1.5,
+                          w + ": limit fraction '" + v + "' must be a number in (0, 1.5]");
+            p.limit_fractions.push_back(*f);
+            p.values.push_back(v + " x limit");
+        }
+    }
+}
+
+void TemplateLoader::asset_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p) {
+    p.kind = ParameterKind::actor_asset;
+    yaml::require(file_, spec, static_cast<bool>(spec["actor"]), w + ": an asset parameter names its 'actor'");
+    p.actor = yaml::scalar(file_, spec["actor"], w + ": 'actor'");
+    const ActorTemplate* actor = nullptr;
+    for (const auto& a : t.actors) {
+        actor = a.name == p.actor ? &a : actor;
+    }
+    const std::string klass = p.actor == "Ego" ? t.ego.asset_class : actor ? actor->asset_class : "";
+    yaml::require(file_, spec["actor"], p.actor == "Ego" || actor, w + ": the template has no actor '" + p.actor + "'");
+    if (spec["values"]) {
+        p.values = value_list(spec["values"], w + ": 'values'");
+        for (const auto& id : p.values) {
+            const Asset* a = cat_.find(id);
+            yaml::require(file_, spec["values"], a != nullptr, w + ": asset '" + id + "' is not in the catalog " + cat_.source);
+            yaml::require(file_, spec["values"], !cat_.under(klass).empty() && (a->element == klass || a->element.rfind(klass + "/", 0) == 0),
+                          w + ": asset '" + id + "' (" + a->element + ") is not under the actor's class '" + klass + "'");
+        }
+    } else {
+        for (const Asset* a : cat_.under(klass)) {
+            p.values.push_back(a->id);
+        }
+    }
+}
+
+void TemplateLoader::map_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p) {
+    p.kind = ParameterKind::map_value;
+    yaml::require(file_, spec, spec["attribute"] && spec["from"], w + ": a map parameter needs 'from' and 'attribute'");
+    const auto from = yaml::scalar(file_, spec["from"], w + ": 'from'");
+    const ElementMatch* source = nullptr;
+    if (from == "anchor") {
+        source = &t.anchor;
+    } else if (from.rfind("context", 0) == 0) {
+        // "context N": one space, then a whole index ("context 0.5" or "contexts0" are not indices).
+        const double index =
+            (from.size() > 8 && from[7] == ' ' ? parse_number(from.substr(8)) : std::nullopt).value_or(-1.0);
+        yaml::require(file_, spec["from"],
+                      index >= 0 && index == std::floor(index) && index < static_cast<double>(t.context.size()),
+                      w + ": 'from' must be anchor or context N with N < " + std::to_string(t.context.size()));
+        p.context = static_cast<int>(index);
+        source = &t.context[static_cast<std::size_t>(p.context)];
+    } else {
+        yaml::fail(file_, spec["from"], w + ": 'from' must be anchor or context N, not '" + from + "'");
+    }
+    p.element = source->element;
+    p.attribute = yaml::scalar(file_, spec["attribute"], w + ": 'attribute'");
+    p.unit = attribute(spec["attribute"], element(spec, p.element, w), p.attribute, w).unit;
+}
+
+void TemplateLoader::choice_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p) {
+    p.kind = ParameterKind::choice;
+    yaml::require(file_, spec, static_cast<bool>(spec["values"]), w + ": a choice lists its 'values'");
+    p.values = value_list(spec["values"], w + ": 'values'");
+    std::set<std::string> seen;
+    for (const auto& v : p.values) {
+        yaml::require(file_, spec["values"], seen.insert(v).second, w + ": value '" + v + "' is listed twice");
+    }
+}
+
+void TemplateLoader::mode_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p) {
+    p.kind = ParameterKind::degraded_mode;
+    yaml::require(file_, spec, !set_.degraded_modes.empty(),
+                  w + ": the template file declares no 'degraded_modes'");
+    if (spec["values"]) {
+        for (const auto& id : value_list(spec["values"], w + ": 'values'")) {
+            const auto m = std::find_if(set_.degraded_modes.begin(), set_.degraded_modes.end(),
+                                        [&](const DegradedMode& d) { return d.id == id; });
+            yaml::require(file_, spec["values"], m != set_.degraded_modes.end(),
+                          w + ": '" + id + "' is not one of the file's degraded_modes");
+            p.modes.push_back(*m);
+        }
+    } else {
+        p.modes = set_.degraded_modes;
+    }
+    for (const auto& m : p.modes) {
+        p.values.push_back(m.id);
+    }
 }
 
 // Representative values of each class of a numeric attribute: the middle of a
