@@ -149,3 +149,92 @@ TEST(ScenarioAnchors, MatchesElementsBelowThePath) {
     m.element = "Scenery/Track geometry/Horiz"; // a prefix of a name is not a parent
     EXPECT_FALSE(matches(p.elements[1], m));
 }
+
+namespace {
+
+// A station throat: the stem (track 0, road 10, node 1 -> 2) ends at the
+// switch (node 2); the main track (track 1, road 11) runs on straight to node
+// 3, the branch (track 2, road 12) was drawn from node 4 towards the switch,
+// so a train taking it runs against its s. The switch sits on the main
+// track's start, facing.
+odd::OddProfile throat() {
+    odd::OddProfile p;
+    auto on = [](odd::TaggedElement e, std::size_t track) {
+        e.track = track;
+        return e;
+    };
+    p.elements = {
+        on(tagged(straight, "sc.geo.hz.straight", {}, "10", 0, 500, 0, 500, {"way:10"}), 0),
+        on(tagged(straight, "sc.geo.hz.straight", {}, "11", 0, 600, 0, 600, {"way:11"}), 1),
+        on(tagged(curve, "sc.geo.hz.curve", {{"radius", 300.0}}, "12", 0, 400, 0, 400, {"way:12"}), 2),
+        on(tagged("Scenery/Track layout/Switch", "sc.lay.switch", {{"direction", std::string{"facing"}}}, "11", 0, 0, 0,
+                  0, {"node:2"}),
+           1),
+    };
+    const double pi = 3.14159265358979;
+    p.track_ends = {{0, 1, 2, 0.0, 0.0}, {1, 2, 3, 0.0, 0.0}, {2, 4, 2, pi + 0.2, pi + 0.1}};
+    return p;
+}
+
+} // namespace
+
+TEST(ScenarioAnchors, LinesRunOnAcrossTheSwitchThroughOrDiverging) {
+    const auto p = throat();
+    const LineIndex lines(p);
+    // Through: the main track, continued back onto the stem.
+    EXPECT_DOUBLE_EQ(lines.start(1), -500.0);
+    EXPECT_DOUBLE_EQ(lines.end(1), 600.0);
+    EXPECT_EQ(lines.at(1, -100.0)->road_id, "10");
+    EXPECT_DOUBLE_EQ(lines.at(1, -100.0)->s, 400.0);
+    EXPECT_EQ(lines.at(1, 100.0)->road_id, "11");
+    // Diverging: the stem, then the branch against its s.
+    const auto d = lines.diverging(3);
+    ASSERT_TRUE(d);
+    EXPECT_FALSE(lines.diverging(0)) << "not a switch";
+    EXPECT_DOUBLE_EQ(lines.start(*d), -500.0);
+    EXPECT_DOUBLE_EQ(lines.end(*d), 400.0);
+    const auto b = lines.at(*d, 100.0);
+    ASSERT_TRUE(b);
+    EXPECT_EQ(b->road_id, "12");
+    EXPECT_DOUBLE_EQ(b->s, 300.0);
+    EXPECT_TRUE(b->reversed);
+    EXPECT_EQ(lines.at(*d, -100.0)->road_id, "10");
+    const auto w = lines.waypoints(*d, -300.0, 300.0); // start, the middle of the branch's run, end
+    ASSERT_EQ(w.size(), 3u);
+    EXPECT_EQ(w[1].road_id, "12");
+    EXPECT_EQ(w.front().road_id, "10");
+    EXPECT_EQ(w.back().road_id, "12");
+    EXPECT_DOUBLE_EQ(w.back().s, 100.0);
+
+    // A template that runs onto the diverging track anchors on that line.
+    Template t;
+    t.id = "div";
+    t.anchor.element = "Scenery/Track layout/Switch";
+    t.anchor.diverging = true;
+    t.ego.run_up_m = 300;
+    t.ego.min_run_up_m = 100;
+    t.ego.overrun_m = 200;
+    const auto anchoring = find_anchors(p, lines, t, 35.0);
+    ASSERT_EQ(anchoring.anchors.size(), 1u);
+    const Anchor& a = anchoring.anchors[0];
+    EXPECT_EQ(a.line, *d);
+    EXPECT_DOUBLE_EQ(a.start_chainage, -300.0);
+    EXPECT_DOUBLE_EQ(a.end_chainage, 200.0);
+    EXPECT_EQ(lines.at(a.line, a.end_chainage)->road_id, "12");
+    t.anchor.diverging = false;
+    const auto through = find_anchors(p, lines, t, 35.0);
+    ASSERT_EQ(through.anchors.size(), 1u);
+    EXPECT_EQ(lines.at(through.anchors[0].line, through.anchors[0].end_chainage)->road_id, "11");
+
+    // Without the branch in the profile there is no diverging run, and the
+    // place is listed with the reason.
+    auto no_branch = p;
+    no_branch.track_ends.pop_back();
+    const LineIndex plain(no_branch);
+    EXPECT_FALSE(plain.diverging(3));
+    t.anchor.diverging = true;
+    const auto none = find_anchors(no_branch, plain, t, 35.0);
+    EXPECT_TRUE(none.anchors.empty());
+    ASSERT_EQ(none.skipped.size(), 1u);
+    EXPECT_NE(none.skipped[0].reason.find("no diverging track"), std::string::npos);
+}

@@ -212,3 +212,33 @@ TEST_F(ScenarioCover, GapsSayWhy) {
     EXPECT_GT(not_drawn, 0u);
 
 }
+
+// At a facing switch the through template runs on along the main track and
+// the diverging one onto the branch: their routes part at the switch, and the
+// diverging run's obstacle stands on a road only the diverging run takes.
+TEST_F(ScenarioCover, DivergingRunTakesTheSwitchsBranch) {
+    const fs::path out = root() / "switch";
+    ASSERT_EQ(scenarios(out, "--strategy pairwise").exit_code, 0);
+    const json m = read_json(out / "manifest.json");
+    std::map<std::string, std::vector<std::string>> through, diverging; // switch node -> route roads
+    std::map<std::string, std::string> obstacle;
+    for (const auto& s : m["scenarios"]) {
+        const std::string node = s["anchor"]["osm_ids"][0];
+        const auto roads = s["ego"]["route_roads"].get<std::vector<std::string>>();
+        if (s["template"] == "facing_switch_obstacle") {
+            through[node] = roads;
+        } else if (s["template"] == "facing_switch_diverging") {
+            diverging[node] = roads;
+            obstacle[node] = s["actors"][0]["start"]["road_id"];
+            EXPECT_LE(s["ego"]["speed_kmh"].get<double>(), 60.0 + 1e-6) << s["id"];
+        }
+    }
+    ASSERT_FALSE(diverging.empty());
+    for (const auto& [node, roads] : diverging) {
+        ASSERT_TRUE(through.contains(node)) << node;
+        EXPECT_NE(roads, through[node]) << node;
+        EXPECT_EQ(roads.front(), through[node].front()) << node << ": the same run-up";
+        EXPECT_NE(std::find(roads.begin(), roads.end(), obstacle[node]), roads.end()) << node;
+        EXPECT_EQ(std::find(through[node].begin(), through[node].end(), obstacle[node]), through[node].end()) << node;
+    }
+}

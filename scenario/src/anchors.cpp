@@ -162,6 +162,20 @@ std::optional<std::string> road_user_place(const odd::TaggedElement& e, const Te
     return std::nullopt;
 }
 
+// A run onto a switch's diverging track takes the switch's diverging line.
+std::optional<std::string> diverging_run(const LineIndex& lines, const Template& t, std::size_t element, Anchor& a) {
+    if (!t.anchor.diverging) {
+        return std::nullopt;
+    }
+    const auto line = lines.diverging(element);
+    if (!line) {
+        return "no diverging track at the switch (a route profile follows its route, or the profile names no "
+               "other track at the switch's node)";
+    }
+    a.line = *line;
+    return std::nullopt;
+}
+
 } // namespace
 
 bool matches(const odd::TaggedElement& e, const ElementMatch& match) {
@@ -205,6 +219,8 @@ Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, c
         }
         if (auto why = road_user_place(e, t)) {
             out.skipped.push_back({i, std::move(*why)});
+        } else if (auto no = diverging_run(lines, t, i, a)) {
+            out.skipped.push_back({i, std::move(*no)});
         } else if (auto why = place_run(profile, on_line, lines, t, ego_half_length_m, a)) {
             out.skipped.push_back({i, std::move(*why)});
         } else {

@@ -111,7 +111,7 @@ std::vector<CoverageItem> spec_items(const odd::OddSpec& spec, const odd::Taxono
     auto add = [&](const std::string& element, const std::string& attribute, const std::string& klass) {
         const Key k{element, attribute, klass};
         const auto r = route.find(k);
-        out.push_back({element, attribute, klass, r == route.end() ? 0 : r->second, scenarios_under(covered, k)});
+        out.push_back({element, attribute, klass, r == route.end() ? 0 : r->second, scenarios_under(covered, k), {}});
     };
     for (const auto& e : spec.elements) {
         const odd::Element* el = tax.find(e.path);
@@ -145,7 +145,7 @@ Coverage compute_coverage(const odd::OddProfile& profile, const odd::Taxonomy& t
         for (auto it = route.lower_bound({el.path, "", ""}); it != route.end() && std::get<0>(it->first) == el.path; ++it) {
             const auto s = covered.find(it->first);
             c.route.push_back({el.path, std::get<1>(it->first), std::get<2>(it->first), it->second,
-                               s == covered.end() ? 0 : s->second});
+                               s == covered.end() ? 0 : s->second, {}});
         }
     }
     const auto beyond = scenario_items(generation, taxonomy, true);
@@ -154,7 +154,7 @@ Coverage compute_coverage(const odd::OddProfile& profile, const odd::Taxonomy& t
              ++it) {
             const auto r = route.find(it->first);
             c.exercised.push_back({el.path, std::get<1>(it->first), std::get<2>(it->first),
-                                   r == route.end() ? 0 : r->second, it->second});
+                                   r == route.end() ? 0 : r->second, it->second, {}});
         }
     }
     if (spec) {

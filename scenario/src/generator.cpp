@@ -86,6 +86,7 @@ std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity&
         case Strategy::full: rows = full_factorial(sizes, valid); break;
         case Strategy::pairwise: rows = pairwise(sizes, valid); break;
         case Strategy::random: rows = random_rows(sizes, valid, o.count, o.seed, &run.every_valid_row); break;
+        case Strategy::cover: break; // rows come from cover_rows (generate)
         }
     } catch (const std::length_error& e) {
         throw InputError(where, std::string{e.what()} + " (use --strategy pairwise or random, or --max-anchors)");

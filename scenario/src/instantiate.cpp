@@ -239,9 +239,12 @@ void prepare(TemplateContext& ctx) {
     for (const auto& a : ctx.tmpl.actors) {
         ctx.default_assets[a.name] = ctx.catalog.under(a.asset_class).front();
     }
+    // The elements of each anchor element's own line (a diverging run's
+    // line has none of its own).
+    auto own_line = [&](const Anchor& a) { return ctx.lines.line_of(ctx.profile.elements[a.element]); };
     std::map<std::size_t, std::vector<std::size_t>> by_line;
     for (const auto& a : ctx.anchors) {
-        by_line[a.line];
+        by_line[own_line(a)];
     }
     for (std::size_t i = 0; i < ctx.profile.elements.size(); ++i) {
         if (const auto it = by_line.find(ctx.lines.line_of(ctx.profile.elements[i])); it != by_line.end()) {
@@ -250,7 +253,7 @@ void prepare(TemplateContext& ctx) {
     }
     ctx.anchor_cover.clear();
     for (const auto& a : ctx.anchors) {
-        ctx.anchor_cover.push_back(cover_map(ctx, a, by_line[a.line]));
+        ctx.anchor_cover.push_back(cover_map(ctx, a, by_line[own_line(a)]));
     }
 }
 

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 namespace railodd::scenario {
 
@@ -21,6 +23,7 @@ constexpr const char* horizontal = "Scenery/Track geometry/Horizontal/";
 constexpr double eps = 1e-6;
 constexpr double max_extension_m = 2000.0; // beyond the longest run-up and overrun a template asks for
 constexpr double max_turn_rad = 0.35;      // ~20 deg: through a switch, never back along the other branch
+constexpr std::size_t diverging_base = std::size_t{1} << 40; // diverging lines' numbers, above every track
 
 double turn(double a, double b) {
     const double d = std::remainder(a - b, 2.0 * std::numbers::pi);
@@ -60,6 +63,45 @@ std::optional<Next> continuation(const std::vector<odd::TrackEnd>& ends, std::in
     return best;
 }
 
+// The OSM node of a switch element ("node:123"), if it is one.
+std::optional<std::int64_t> switch_node(const odd::TaggedElement& e) {
+    if (!e.point || e.element.rfind("Scenery/Track layout/Switch", 0) != 0) {
+        return std::nullopt;
+    }
+    for (const auto& id : e.osm_ids) {
+        if (id.rfind("node:", 0) == 0) {
+            try {
+                return std::stoll(id.substr(5));
+            } catch (const std::exception&) {
+                return std::nullopt;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+// A track with an end at `node` other than those taken, entered there and
+// run forward: the one turning least from `heading` (within max_turn_rad),
+// or without a heading the lowest track number.
+std::optional<Next> branch_at(const std::vector<odd::TrackEnd>& ends, std::int64_t node,
+                              std::optional<double> heading, const std::set<std::size_t>& taken) {
+    std::optional<Next> best;
+    double best_turn = max_turn_rad;
+    for (const auto& t : ends) {
+        if (taken.contains(t.track) || (t.from_node != node && t.to_node != node)) {
+            continue;
+        }
+        const bool against = t.from_node != node;
+        const double h = against ? t.to_heading + std::numbers::pi : t.from_heading;
+        const double d = heading ? turn(h, *heading) : 0.0;
+        if (d < best_turn - 1e-9 || (!heading && !best)) {
+            best_turn = heading ? d : best_turn;
+            best = Next{t.track, against};
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.along_route) {
@@ -81,48 +123,125 @@ LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.alon
             extended[t.track] = extend(profile.track_ends, t);
         }
     }
+    // Diverging lines: the run-up of their track's extended line, then the
+    // tracks' own pieces. Numbered above every track.
+    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
+        if (auto line = diverging_line(profile, i, extended)) {
+            diverging_[i] = diverging_base + i;
+            extended[diverging_base + i] = std::move(*line);
+        }
+    }
     lines_ = std::move(extended);
+}
+
+std::optional<std::size_t> LineIndex::diverging(std::size_t switch_element) const {
+    const auto it = diverging_.find(switch_element);
+    return it == diverging_.end() ? std::nullopt : std::optional<std::size_t>(it->second);
+}
+
+// The pieces of track `track`, entered at one end (against its chainage when
+// `against`), placed beyond `at` (forward) or before it; returns its length.
+double LineIndex::append(std::vector<Piece>& out, std::size_t track, bool against, bool forward, double at) const {
+    const double c_start = start(track), c_end = end(track);
+    // Distance from the joining end, along the continued line's direction.
+    const bool from_start = forward != against;
+    for (const Piece& p : lines_.at(track)) {
+        const double d0 = from_start ? p.c0 - c_start : c_end - p.c1;
+        const double d1 = from_start ? p.c1 - c_start : c_end - p.c0;
+        Piece q = p;
+        q.reversed = p.reversed != against;
+        q.c0 = forward ? at + d0 : at - d1;
+        q.c1 = forward ? at + d1 : at - d0;
+        out.push_back(q);
+    }
+    return c_end - c_start;
+}
+
+// From `node`, travelling `heading`, onto the smoothest continuing track
+// again and again, up to max_extension_m, beyond `at` (forward) or before it.
+void LineIndex::run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>& ends, std::int64_t node,
+                       double heading, bool forward, double at, std::set<std::size_t> used) const {
+    double added = 0.0;
+    while (added < max_extension_m) {
+        const auto next = continuation(ends, node, heading, forward, used);
+        if (!next || !lines_.contains(next->track)) {
+            break;
+        }
+        used.insert(next->track);
+        const auto& te = *std::find_if(ends.begin(), ends.end(),
+                                       [&](const odd::TrackEnd& x) { return x.track == next->track; });
+        const double len = append(out, next->track, next->against, forward, at);
+        at += forward ? len : -len;
+        added += len;
+        // Leaving the track at its other end.
+        const bool leave_at_to = forward != next->against;
+        node = leave_at_to ? te.to_node : te.from_node;
+        heading = (leave_at_to ? te.to_heading : te.from_heading) + (next->against ? std::numbers::pi : 0.0);
+    }
 }
 
 // The pieces of `own` continued before its start and beyond its end.
 std::vector<LineIndex::Piece> LineIndex::extend(const std::vector<odd::TrackEnd>& ends,
                                                 const odd::TrackEnd& own) const {
     std::vector<Piece> out = lines_.at(own.track);
-    for (const bool forward : {false, true}) {
-        std::set<std::size_t> used{own.track};
-        std::int64_t node = forward ? own.to_node : own.from_node;
-        double heading = forward ? own.to_heading : own.from_heading;
-        double at = forward ? end(own.track) : start(own.track); // where the next track joins, on this line
-        double added = 0.0;
-        while (added < max_extension_m) {
-            const auto next = continuation(ends, node, heading, forward, used);
-            if (!next || !lines_.contains(next->track)) {
-                break;
-            }
-            used.insert(next->track);
-            const auto& te = *std::find_if(ends.begin(), ends.end(),
-                                           [&](const odd::TrackEnd& x) { return x.track == next->track; });
-            const double c_start = start(next->track), c_end = end(next->track);
-            // Distance from the joining end, along the continued line's direction.
-            const bool from_start = forward != next->against;
-            for (const Piece& p : lines_.at(next->track)) {
-                const double d0 = from_start ? p.c0 - c_start : c_end - p.c1;
-                const double d1 = from_start ? p.c1 - c_start : c_end - p.c0;
-                Piece q = p;
-                q.reversed = p.reversed != next->against;
-                q.c0 = forward ? at + d0 : at - d1;
-                q.c1 = forward ? at + d1 : at - d0;
-                out.push_back(q);
-            }
-            const double len = c_end - c_start;
-            at += forward ? len : -len;
-            added += len;
-            // Leaving the track at its other end.
-            const bool leave_at_to = forward != next->against;
-            node = leave_at_to ? te.to_node : te.from_node;
-            heading = (leave_at_to ? te.to_heading : te.from_heading) + (next->against ? std::numbers::pi : 0.0);
+    run_on(out, ends, own.from_node, own.from_heading, false, start(own.track), {own.track});
+    run_on(out, ends, own.to_node, own.to_heading, true, end(own.track), {own.track});
+    std::stable_sort(out.begin(), out.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
+    return out;
+}
+
+// A switch's track up to the switch point, then the track at the switch's
+// node that the line does not run on: not the switch's own track, not the
+// track the line came from or continues on at that node, and leaving the
+// node within max_turn_rad of the line's heading where that is known (at a
+// track end). Where several remain (a slip), the lowest track number.
+std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
+    const odd::OddProfile& profile, std::size_t element, const std::map<std::size_t, std::vector<Piece>>& extended) const {
+    const auto& e = profile.elements[element];
+    const auto node = switch_node(e);
+    const auto own = std::find_if(profile.track_ends.begin(), profile.track_ends.end(),
+                                  [&](const odd::TrackEnd& t) { return t.track == e.track; });
+    if (!node || own == profile.track_ends.end() || !lines_.contains(e.track)) {
+        return std::nullopt;
+    }
+    const double c = e.chainage_start;
+    const bool at_start = own->from_node == *node && std::abs(c - start(e.track)) < 1.0;
+    const bool at_end = own->to_node == *node && std::abs(c - end(e.track)) < 1.0;
+    std::set<std::size_t> taken{e.track};
+    std::optional<double> heading;
+    if (at_start) {
+        heading = own->from_heading;
+        if (const auto stem = continuation(profile.track_ends, *node, own->from_heading, false, taken)) {
+            taken.insert(stem->track);
+        }
+    } else if (at_end) {
+        heading = own->to_heading;
+        if (const auto through = continuation(profile.track_ends, *node, own->to_heading, true, taken)) {
+            taken.insert(through->track);
         }
     }
+    const auto branch = branch_at(profile.track_ends, *node, heading, taken);
+    if (!branch || !lines_.contains(branch->track)) {
+        return std::nullopt;
+    }
+    std::vector<Piece> out;
+    for (Piece p : extended.at(e.track)) {
+        if (p.c0 >= c - eps) {
+            continue;
+        }
+        if (p.c1 > c) { // the piece the switch lies in ends there
+            (p.reversed ? p.s0 : p.s1) = p.reversed ? p.s1 - (c - p.c0) : p.s0 + (c - p.c0);
+            p.c1 = c;
+        }
+        out.push_back(p);
+    }
+    const auto& te = *std::find_if(profile.track_ends.begin(), profile.track_ends.end(),
+                                   [&](const odd::TrackEnd& t) { return t.track == branch->track; });
+    const double len = append(out, branch->track, branch->against, true, c);
+    taken.insert(branch->track);
+    const std::int64_t far = branch->against ? te.from_node : te.to_node;
+    const double far_heading = branch->against ? te.from_heading + std::numbers::pi : te.to_heading;
+    run_on(out, profile.track_ends, far, far_heading, true, c + len, taken);
     std::stable_sort(out.begin(), out.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
     return out;
 }

@@ -73,7 +73,15 @@ private:
         yaml::require(file_, node, static_cast<bool>(node["text"]), what + ": 'text' is missing");
         t.text = yaml::scalar(file_, node["text"], what + ": 'text'");
         yaml::require(file_, node, static_cast<bool>(node["anchor"]), what + ": 'anchor' is missing");
-        static_cast<ElementMatch&>(t.anchor) = match(node["anchor"], what + ": anchor", {"element", "where", "at"});
+        static_cast<ElementMatch&>(t.anchor) = match(node["anchor"], what + ": anchor", {"element", "where", "at", "route"});
+        if (const auto route = node["anchor"]["route"]) {
+            const auto r = yaml::scalar(file_, route, what + ": anchor 'route'");
+            yaml::require(file_, route, r == "through" || r == "diverging",
+                          what + ": anchor 'route' must be through or diverging, not '" + r + "'");
+            yaml::require(file_, route, t.anchor.element.rfind("Scenery/Track layout/Switch", 0) == 0,
+                          what + ": anchor 'route' needs a switch anchor, not '" + t.anchor.element + "'");
+            t.anchor.diverging = r == "diverging";
+        }
         if (const auto at = node["anchor"]["at"]) {
             const auto a = yaml::scalar(file_, at, what + ": anchor 'at'");
             yaml::require(file_, at, a == "start" || a == "middle" || a == "end",

@@ -7,8 +7,10 @@
 #include "railodd/scenario/templates.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +34,11 @@ public:
     std::optional<LanePlacement> at(std::size_t line, double chainage) const;
     // Waypoints from c0 to c1: both ends and the middle of every road run between.
     std::vector<LanePlacement> waypoints(std::size_t line, double c0, double c1) const;
+    // The line that runs along the switch element's track up to the switch
+    // and then onto its diverging track (whole-map profiles); nullopt where
+    // the profile has no such track. Its chainages up to the switch are the
+    // track's own.
+    std::optional<std::size_t> diverging(std::size_t switch_element) const;
 
 private:
     struct Piece {
@@ -42,8 +49,14 @@ private:
     };
     bool along_route_ = false;
     std::map<std::size_t, std::vector<Piece>> lines_; // by chainage
+    std::map<std::size_t, std::size_t> diverging_;    // switch element -> its diverging line
     const Piece* piece(std::size_t line, double chainage) const;
     std::vector<Piece> extend(const std::vector<odd::TrackEnd>& ends, const odd::TrackEnd& own) const;
+    double append(std::vector<Piece>& out, std::size_t track, bool against, bool forward, double at) const;
+    void run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>& ends, std::int64_t node, double heading,
+                bool forward, double at, std::set<std::size_t> used) const;
+    std::optional<std::vector<Piece>> diverging_line(const odd::OddProfile& profile, std::size_t element,
+                                                     const std::map<std::size_t, std::vector<Piece>>& extended) const;
 };
 
 struct Anchor {

@@ -36,6 +36,9 @@ enum class AnchorAt { start, middle, end }; // where on a stretch element the an
 
 struct AnchorRequirement : ElementMatch {
     AnchorAt at = AnchorAt::start;
+    // At a switch: run on through it (the smoothest continuation) or onto
+    // its diverging track.
+    bool diverging = false;
 };
 
 // Another element the route must have within `within_m` before the anchor (in
