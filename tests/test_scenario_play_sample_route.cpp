@@ -174,4 +174,21 @@ TEST(ScenarioPlaySharedExtract, ARandomSampleOfLiechtensteinPlays) {
     const json play = read_json(dir / "set" / "play.json");
     EXPECT_GE(play["scenarios"].size(), 20u);
     expect_all_pass(play);
+    // Lines run on across every track end: no switch is left without track
+    // before or after it (the track ends follow the alignment's direction).
+    const json coverage = read_json(dir / "set" / "coverage.json");
+    for (const auto& t : coverage["templates"]) {
+        if (t["template"].get<std::string>().find("switch") == std::string::npos) {
+            continue;
+        }
+        EXPECT_GT(t["anchors"].get<int>(), 0) << t["template"];
+        for (const auto& skip : t["anchors_skipped"]) {
+            EXPECT_EQ(skip["reason"].get<std::string>().find("only 0 m"), std::string::npos) << t["template"] << skip;
+        }
+    }
+    // The default strategy covers the real route's elements and classes.
+    ASSERT_EQ(run_railodd("scenarios --map " + quoted(dir / "map") + " -o " + quoted(dir / "cover") + " -q").exit_code, 0);
+    const json cover = read_json(dir / "cover" / "coverage.json");
+    EXPECT_GE(cover["route"]["ratio"].get<double>(), 0.95) << cover["gaps"].dump(1);
+    EXPECT_LE(3 * cover["selection"]["scenarios"].get<int>(), cover["selection"]["pairwise_scenarios"].get<int>());
 }

@@ -333,3 +333,36 @@ TEST(ScenarioStrategies, CoverRowsWithOneParameterTakeEachValue) {
     EXPECT_EQ(anchors, (std::set<std::size_t>{1, 3}));
     EXPECT_EQ(rows.size(), 3u);
 }
+
+// A chosen anchor that admits none of the parameter rows (a combination
+// pairwise did not need) still gets a row of its own.
+TEST(ScenarioStrategies, CoverRowsPlaceAChosenAnchorNoParameterRowFits) {
+    const std::vector<std::size_t> params = {2, 2, 2};
+    const auto rows = pairwise(params, anything);
+    ASSERT_LT(rows.size(), 8u);
+    Row missing;
+    for (const auto& r : full_factorial(params, anything)) {
+        if (std::find(rows.begin(), rows.end(), r) == rows.end()) {
+            missing = r;
+            break;
+        }
+    }
+    ASSERT_EQ(missing.size(), 3u);
+    const std::vector<std::size_t> sizes = {4, 2, 2, 2};
+    // Anchor 0 admits only the missing combination; the others admit anything.
+    const Validity valid = [&](const Row& r) {
+        if (r[0] != 0) {
+            return true;
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (r[k + 1] != kUnset && r[k + 1] != missing[k]) {
+                return false;
+            }
+        }
+        return true;
+    };
+    const auto out = cover_rows(sizes, valid, {0, 3});
+    expect_valid_rows(out, sizes, valid);
+    const Row want{0, missing[0], missing[1], missing[2]};
+    EXPECT_NE(std::find(out.begin(), out.end(), want), out.end());
+}

@@ -39,10 +39,13 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
             const auto& a = ctx.alignment(e);
             p.length_m += a.length();
             ++p.tracks;
+            // Chainage runs along the alignment, which may run against the
+            // graph edge's node order.
             const auto& edge = input.map_input.tracks.edges[e];
-            p.track_ends.push_back({e, input.map_input.tracks.vertices[edge.from].node_id,
-                                    input.map_input.tracks.vertices[edge.to].node_id, a.evaluate(0.0).hdg,
-                                    a.evaluate(a.length()).hdg});
+            const bool against = input.map_input.fitted_tracks.edges[e].reversed;
+            const auto& v = input.map_input.tracks.vertices;
+            p.track_ends.push_back({e, v[against ? edge.to : edge.from].node_id, v[against ? edge.from : edge.to].node_id,
+                                    a.evaluate(0.0).hdg, a.evaluate(a.length()).hdg});
         }
     }
     // Scenery from the geometry, then from the ways' tags and the features;

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <variant>
 
 namespace railodd::scenario {
 
@@ -69,6 +70,16 @@ std::string format_number(double value) {
 
 bool countable(const odd::Attribute& a) {
     return a.type != odd::AttributeType::string && (a.type != odd::AttributeType::number || !a.bins.empty());
+}
+
+std::string text_of(const odd::AttributeValue& v) {
+    if (const double* x = std::get_if<double>(&v)) {
+        return format_number(*x);
+    }
+    if (const bool* b = std::get_if<bool>(&v)) {
+        return *b ? "true" : "false";
+    }
+    return std::get<std::string>(v);
 }
 
 } // namespace railodd::scenario

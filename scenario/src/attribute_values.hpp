@@ -1,6 +1,7 @@
 #pragma once
 // Checks and formats attribute values against the taxonomy, shared by the
 // catalog and template loaders and the coverage table.
+#include "railodd/odd/profile.hpp"
 #include "railodd/odd/taxonomy.hpp"
 
 #include <optional>
@@ -26,5 +27,8 @@ bool countable(const odd::Attribute& attribute);
 
 // Shortest text of a number as parameters and texts show it ("80", "0.5").
 std::string format_number(double value);
+
+// A profile value as text: a number formatted so, true / false, the string.
+std::string text_of(const odd::AttributeValue& value);
 
 } // namespace railodd::scenario

@@ -16,16 +16,6 @@ namespace {
 
 using Key = std::tuple<std::string, std::string, std::string>; // element, attribute, class
 
-std::string text_of(const odd::AttributeValue& v) {
-    if (const double* x = std::get_if<double>(&v)) {
-        return format_number(*x);
-    }
-    if (const bool* b = std::get_if<bool>(&v)) {
-        return *b ? "true" : "false";
-    }
-    return std::get<std::string>(v);
-}
-
 std::map<Key, std::size_t> route_items(const odd::OddProfile& profile, const odd::Taxonomy& tax) {
     std::map<Key, std::size_t> items;
     for (const auto& e : profile.elements) {

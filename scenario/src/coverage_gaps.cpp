@@ -16,16 +16,6 @@ bool under(const std::string& path, const std::string& element) {
     return path == element || path.rfind(element + "/", 0) == 0;
 }
 
-std::string text_of(const odd::AttributeValue& v) {
-    if (const double* x = std::get_if<double>(&v)) {
-        return format_number(*x);
-    }
-    if (const bool* b = std::get_if<bool>(&v)) {
-        return *b ? "true" : "false";
-    }
-    return std::get<std::string>(v);
-}
-
 // Whether the profile element is the item: its element, and the class of the
 // item's attribute.
 bool is_item(const odd::TaggedElement& e, const CoverageItem& item, const odd::Taxonomy& tax) {
