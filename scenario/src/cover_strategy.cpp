@@ -17,7 +17,29 @@ bool empty_domain(const std::vector<std::size_t>& sizes) {
     return std::find(sizes.begin(), sizes.end(), std::size_t{0}) != sizes.end();
 }
 
+bool fill(const std::vector<std::size_t>& sizes, const Validity& valid, Row& row, std::size_t k, std::size_t& budget) {
+    while (k < sizes.size() && row[k] != kUnset) {
+        ++k;
+    }
+    if (k == sizes.size()) {
+        return valid(row);
+    }
+    for (std::size_t v = 0; v < sizes[k] && budget > 0; ++v, --budget) {
+        row[k] = v;
+        if (valid(row) && fill(sizes, valid, row, k + 1, budget)) {
+            return true;
+        }
+    }
+    row[k] = kUnset;
+    return false;
+}
+
 } // namespace
+
+bool completable(const std::vector<std::size_t>& sizes, const Validity& valid, Row row) {
+    std::size_t budget = 20000; // as the pairwise completion: a pathological constraint set cannot stall a run
+    return row.size() == sizes.size() && !empty_domain(sizes) && valid(row) && fill(sizes, valid, row, 0, budget);
+}
 
 bool any_anchor(std::size_t anchors, const Validity& valid, const Row& params) {
     Row full{0};

@@ -4,6 +4,7 @@
 #include "coverage_gaps.hpp"
 
 #include "attribute_values.hpp"
+#include "railodd/scenario/anchors.hpp"
 
 #include <algorithm>
 #include <set>
@@ -83,37 +84,88 @@ bool varied_by(const TemplateSet& templates, const CoverageItem& item, const odd
     return false;
 }
 
+// An item no template anchors on (a line usage, a gauge) is exercised by the
+// anchors lying on its stretches; where every such place was skipped, say so.
+std::string places_on_it(const CoverageItem& item, const odd::OddProfile& profile, const odd::Taxonomy& tax,
+                         const Generation& g, const TemplateSet& templates) {
+    std::vector<const odd::TaggedElement*> stretches;
+    for (const auto& e : profile.elements) {
+        if (!e.point && is_item(e, item, tax)) {
+            stretches.push_back(&e);
+        }
+    }
+    std::size_t skipped = 0;
+    std::string example;
+    for (std::size_t t = 0; t < templates.templates.size() && t < g.runs.size(); ++t) {
+        for (const auto& s : g.runs[t].skipped) {
+            const auto& at = profile.elements[s.element];
+            for (const auto* e : stretches) {
+                if (at.track == e->track && at.chainage_start >= e->chainage_start && at.chainage_start <= e->chainage_end) {
+                    ++skipped;
+                    example = example.empty() ? templates.templates[t].id + ": " + s.reason : example;
+                    break;
+                }
+            }
+        }
+    }
+    if (skipped > 0) {
+        return "no anchor on the route: no template anchors on this element, and the " + std::to_string(skipped) +
+               " place(s) of other templates on it were skipped, e.g. " + example;
+    }
+    return "no template anchors on this element, and no scenario's anchor lies on it";
+}
+
 std::string route_gap(const CoverageItem& item, const odd::OddProfile& profile, const odd::Taxonomy& tax,
                       const Generation& g, const TemplateSet& templates) {
-    std::vector<std::string> anchored, drawn_none;
+    std::vector<std::string> anchored, drawn_none, infeasible_in;
     std::string skip;
-    std::size_t skipped = 0;
+    std::size_t skipped = 0, infeasible = 0;
     for (std::size_t t = 0; t < templates.templates.size() && t < g.runs.size(); ++t) {
         const Template& tm = templates.templates[t];
         if (!under(item.element, tm.anchor.element)) {
             continue;
         }
         anchored.push_back(tm.id);
-        for (const auto& s : g.runs[t].skipped) {
-            if (is_item(profile.elements[s.element], item, tax)) {
-                ++skipped;
-                skip = skip.empty() ? s.reason : skip;
+        // The item's places for this template, and which of them could not be used.
+        std::set<std::size_t> places, unusable;
+        for (std::size_t i = 0; i < profile.elements.size(); ++i) {
+            if (is_item(profile.elements[i], item, tax) && matches(profile.elements[i], tm.anchor)) {
+                places.insert(i);
             }
         }
-        if (g.runs[t].anchors > 0) {
+        for (const auto& s : g.runs[t].skipped) {
+            if (places.contains(s.element)) {
+                ++skipped;
+                skip = skip.empty() ? s.reason : skip;
+                unusable.insert(s.element);
+            }
+        }
+        for (const auto i : g.runs[t].infeasible) {
+            if (places.contains(i)) {
+                ++infeasible;
+                infeasible_in.push_back(tm.id);
+                unusable.insert(i);
+            }
+        }
+        if (places.size() > unusable.size()) {
             drawn_none.push_back(tm.id);
         }
-    }
-    if (skipped > 0) {
-        return "no anchor on the route: " + std::to_string(skipped) + " place(s) skipped, e.g. " + skip;
     }
     if (!drawn_none.empty()) {
         return "not drawn: the strategy chose no anchor of " + drawn_none.front() + " there (--count, --max-anchors)";
     }
+    if (infeasible > 0) {
+        return "constraint infeasible: at " + std::to_string(infeasible) + " place(s) " + infeasible_in.front() +
+               "'s constraints admit no row (e.g. every ego speed above the speed limit there, or above what the "
+               "trains can run)";
+    }
+    if (skipped > 0) {
+        return "no anchor on the route: " + std::to_string(skipped) + " place(s) skipped, e.g. " + skip;
+    }
     if (!anchored.empty()) {
         return "no template for this class: " + anchored.front() + " anchors here but its conditions exclude it";
     }
-    return "no template anchors on this element, and no scenario's anchor lies on it";
+    return places_on_it(item, profile, tax, g, templates);
 }
 
 } // namespace

@@ -95,6 +95,7 @@ ojson coverage_json(const Coverage& c) {
             skipped.push_back({{"element", s.element}, {"reason", s.reason}});
         }
         pairs.push_back({{"template", r.template_id}, {"anchors", r.anchors}, {"anchors_skipped", std::move(skipped)},
+                         {"anchors_infeasible", r.infeasible.size()},
                          {"rows", r.rows}, {"dimensions", std::move(dims)}, {"pairs_feasible", r.pairs.feasible},
                          {"pairs_covered", r.pairs.covered}, {"pairs_infeasible", r.pairs.infeasible},
                          {"ratio", ratio(r.pairs.covered, r.pairs.feasible)}});

@@ -56,7 +56,8 @@ Validity validity(const TemplateContext& ctx) {
                 const ParameterDomain& q = t.parameters[ctx.varied[e]];
                 ego_chosen = ego_chosen && !(q.kind == ParameterKind::actor_asset && q.actor == "Ego" && !set(r, e + 1));
             }
-            if (ego_chosen && std::isfinite(kmh) && kmh > asset_for(ctx, r, "Ego").max_speed_mps * 3.6 + 1e-9) {
+            if (const Asset* ego = ego_chosen ? ego_for(ctx, r, kmh) : nullptr;
+                ego_chosen && std::isfinite(kmh) && (!ego || kmh > ego->max_speed_mps * 3.6 + 1e-9)) {
                 return false;
             }
         }
@@ -170,6 +171,22 @@ std::vector<std::size_t> parameter_sizes(const Template& t, std::vector<std::siz
     return run.sizes;
 }
 
+// Per anchor, whether the constraints admit some row there; the others are
+// recorded in the run (coverage says "constraint infeasible").
+std::vector<char> feasible_anchors(const TemplateContext& ctx, TemplateRun& run) {
+    const Validity valid = validity(ctx);
+    std::vector<char> out(ctx.anchors.size(), 0);
+    for (std::size_t a = 0; a < ctx.anchors.size(); ++a) {
+        Row r(run.sizes.size(), kUnset);
+        r[0] = a;
+        out[a] = completable(run.sizes, valid, r) ? 1 : 0;
+        if (!out[a]) {
+            run.infeasible.push_back(ctx.anchors[a].element);
+        }
+    }
+    return out;
+}
+
 // Under the cover strategy, the set's size against pairwise over all anchors
 // and the full factorial, and the pairs of the parameters alone.
 void cover_figures(TemplateRun& run, const Validity& valid, const std::vector<Row>& rows) {
@@ -201,19 +218,28 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
     // strategy chooses anchors across templates.
     std::deque<std::vector<Anchor>> anchors;
     std::deque<TemplateContext> ctxs;
+    std::vector<std::vector<char>> feasible; // per template and anchor: some valid row stands there
     for (const Template& t : templates.templates) {
         Anchoring anchoring = find_anchors(profile, lines, t, ego_half_length(t, catalog));
         anchors.push_back(thin(std::move(anchoring.anchors), options.max_anchors));
-        ctxs.push_back(TemplateContext{profile, lines, t, catalog, taxonomy, options, anchors.back(), {}, {}, {}});
+        ctxs.push_back(TemplateContext{profile, lines, t, catalog, taxonomy, options, anchors.back(), {}, {}, {}, {}});
         TemplateRun& run = out.runs.emplace_back();
         run.skipped = std::move(anchoring.skipped);
         parameter_sizes(t, ctxs.back().varied, run, anchors.back().size());
         prepare(ctxs.back());
+        feasible.push_back(feasible_anchors(ctxs.back(), run));
     }
     std::vector<std::vector<std::size_t>> chosen;
     if (options.strategy == Strategy::cover) {
         std::size_t items = 0;
-        const auto candidates = anchor_items(ctxs, items);
+        auto candidates = anchor_items(ctxs, items);
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            for (std::size_t a = 0; a < candidates[k].size(); ++a) {
+                if (!feasible[k][a]) {
+                    candidates[k][a].clear(); // no scenario can stand there
+                }
+            }
+        }
         chosen = choose_anchors(candidates, items, options.seed);
     }
     std::set<std::string> used_assets;
@@ -227,8 +253,9 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
         if (options.strategy == Strategy::cover) {
             // Every template with anchors takes part: its parameters' pairs
             // need a row even where the set cover chose none of its anchors.
-            if (chosen[k].empty() && !anchors[k].empty()) {
-                chosen[k].push_back(0);
+            const auto first = std::find(feasible[k].begin(), feasible[k].end(), 1);
+            if (chosen[k].empty() && first != feasible[k].end()) {
+                chosen[k].push_back(static_cast<std::size_t>(first - feasible[k].begin()));
             }
             rows = cover_rows(run.sizes, valid, chosen[k]);
             cover_figures(run, valid, rows);

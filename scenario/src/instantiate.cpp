@@ -235,7 +235,8 @@ MoveStart move_start(const ActorTemplate& t, const Actor& actor, const Anchor& a
 } // namespace
 
 void prepare(TemplateContext& ctx) {
-    ctx.default_assets["Ego"] = ctx.catalog.under(ctx.tmpl.ego.asset_class).front();
+    ctx.ego_assets = ctx.catalog.under(ctx.tmpl.ego.asset_class);
+    ctx.default_assets["Ego"] = ctx.ego_assets.front();
     for (const auto& a : ctx.tmpl.actors) {
         ctx.default_assets[a.name] = ctx.catalog.under(a.asset_class).front();
     }
@@ -266,6 +267,26 @@ const Asset& asset_for(const TemplateContext& ctx, const Row& row, const std::st
         }
     }
     return *ctx.default_assets.at(actor);
+}
+
+const Asset* ego_for(const TemplateContext& ctx, const Row& row, double kmh) {
+    for (std::size_t d = 0; d < ctx.varied.size(); ++d) {
+        std::size_t v = 0;
+        const ParameterDomain* p = varied_param(ctx, row, d, v);
+        if (p && p->kind == ParameterKind::actor_asset && p->actor == "Ego") {
+            return ctx.catalog.find(p->values[v]);
+        }
+    }
+    const Asset* fallback = ctx.default_assets.at("Ego");
+    if (!std::isfinite(kmh) || kmh <= fallback->max_speed_mps * 3.6 + 1e-9) {
+        return fallback;
+    }
+    for (const Asset* a : ctx.ego_assets) {
+        if (kmh <= a->max_speed_mps * 3.6 + 1e-9) {
+            return a;
+        }
+    }
+    return nullptr;
 }
 
 EgoSpeed ego_speed_for(const TemplateContext& ctx, const Row& row) {
@@ -306,7 +327,8 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
 
     const EgoSpeed speed = ego_speed_for(ctx, row);
     rec.speed_basis = speed.basis;
-    const Asset& ego_asset = asset_for(ctx, row, "Ego");
+    const Asset* fast_enough = ego_for(ctx, row, speed.kmh);
+    const Asset& ego_asset = fast_enough ? *fast_enough : asset_for(ctx, row, "Ego");
     sc.ego = actor_from(ego_asset, "Ego");
     sc.ego.start = ctx.lines.at(a.line, a.start_chainage).value_or(a.place);
     sc.ego.route = ctx.lines.waypoints(a.line, a.start_chainage, a.end_chainage);

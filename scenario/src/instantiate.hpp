@@ -22,6 +22,7 @@ struct TemplateContext {
     std::vector<std::size_t> varied; // indices into tmpl.parameters of dimensions 1..n (0 is the anchor)
     std::map<std::string, const Asset*> default_assets; // per actor ("Ego" too): the first asset of its class
     std::vector<std::vector<CoveredValue>> anchor_cover; // per anchor: what of the map it exercises
+    std::vector<const Asset*> ego_assets; // the ego's class, in catalog order
 };
 
 // Fills the context's per-template caches: default assets and, per anchor,
@@ -39,6 +40,12 @@ struct EgoSpeed {
 // first asset of its class.
 const Asset& asset_for(const TemplateContext& ctx, const Row& row, const std::string& actor);
 EgoSpeed ego_speed_for(const TemplateContext& ctx, const Row& row);
+
+// The ego's asset for a row run at `kmh`: its asset parameter's value; else
+// the first asset of its class, or where that cannot run so fast the first
+// of the class that can (a template that names no train runs a high-speed
+// line with a train built for it). Null where no asset of the class can.
+const Asset* ego_for(const TemplateContext& ctx, const Row& row, double kmh);
 
 // The row's placeholder values, the scenario text, the declared OpenSCENARIO
 // parameters, the environment from the perturbations and their coverage.

@@ -52,6 +52,9 @@ struct TemplateRun {
     std::string template_id;
     std::size_t anchors = 0;
     std::vector<SkippedAnchor> skipped;
+    // Anchors (their profile elements) where the constraints admit no row,
+    // e.g. a speed limit below every ego speed of the template.
+    std::vector<std::size_t> infeasible;
     std::vector<std::string> dimensions;  // "anchor", then the varied parameters
     std::vector<std::size_t> sizes;
     std::size_t rows = 0;

@@ -46,6 +46,10 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
 std::vector<Row> cover_rows(const std::vector<std::size_t>& sizes, const Validity& valid,
                             const std::vector<std::size_t>& anchors);
 
+// Whether some valid complete row extends `row` (its kUnset entries filled),
+// by a bounded depth-first search.
+bool completable(const std::vector<std::size_t>& sizes, const Validity& valid, Row row);
+
 // Whether some anchor 0..anchors-1 admits the (partial) parameter row.
 bool any_anchor(std::size_t anchors, const Validity& valid, const Row& params);
 
