@@ -238,3 +238,32 @@ TEST(ScenarioAnchors, LinesRunOnAcrossTheSwitchThroughOrDiverging) {
     ASSERT_EQ(none.skipped.size(), 1u);
     EXPECT_NE(none.skipped[0].reason.find("no diverging track"), std::string::npos);
 }
+
+// The stop trigger fires within 5 m of the run's end: an end that would lie
+// a few metres into a road (here 2 m into road 3, after a 3 m junction road)
+// moves back to where the train stops on a road of its route.
+TEST(ScenarioAnchors, RunsDoNotEndJustInsideARoad) {
+    odd::OddProfile p;
+    p.elements = {
+        tagged(straight, "sc.geo.hz.straight", {}, "1", 0, 1000, 0, 1000, {"way:1"}),
+        tagged(straight, "sc.geo.hz.straight", {}, "2", 0, 3, 1000, 1003, {"way:2"}),
+        tagged(straight, "sc.geo.hz.straight", {}, "3", 0, 600, 1003, 1603, {"way:3"}),
+        tagged(crossing, "sc.xing.level", {{"barrier", std::string{"full"}}}, "1", 805, 805, 805, 805, {"node:5"}),
+    };
+    const LineIndex lines(p);
+    EXPECT_DOUBLE_EQ(lines.road_entry(0, 1005.0), 1003.0);
+    EXPECT_DOUBLE_EQ(lines.road_entry(0, 1001.0), 1000.0);
+    EXPECT_DOUBLE_EQ(lines.road_entry(0, 500.0), 0.0);
+    Template t;
+    t.id = "t";
+    t.anchor.element = crossing;
+    t.ego.run_up_m = 400;
+    t.ego.min_run_up_m = 100;
+    t.ego.overrun_m = 200; // would end at 1005: 2 m into road 3
+    const auto a = find_anchors(p, lines, t, 35.0);
+    ASSERT_EQ(a.anchors.size(), 1u);
+    EXPECT_DOUBLE_EQ(a.anchors[0].end_chainage, 999.5);
+    EXPECT_EQ(lines.at(0, a.anchors[0].end_chainage)->road_id, "1");
+    t.ego.overrun_m = 250; // 1055: well inside road 3, kept
+    EXPECT_DOUBLE_EQ(find_anchors(p, lines, t, 35.0).anchors[0].end_chainage, 1055.0);
+}

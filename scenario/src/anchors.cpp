@@ -86,6 +86,21 @@ double hazard_run_up(const Template& t, double ego_half_length_m) {
     return need;
 }
 
+// The stop trigger fires within 5 m of the run's end, so an end a few metres
+// into a road (a junction's connecting road) stops the train before it enters
+// that road, off its route's last road: such an end moves back onto the road
+// before (and on, past roads too short to hold it), unless that would put it
+// before `not_before`.
+double off_road_start(const LineIndex& lines, std::size_t line, double end, double not_before) {
+    constexpr double trigger_m = 6.0; // the trigger's 5 m and a margin
+    for (double entry = lines.road_entry(line, end);
+         end - entry < trigger_m && entry > lines.start(line) + 1.0 && entry - 0.5 >= not_before;
+         entry = lines.road_entry(line, end)) {
+        end = entry - 0.5; // and again where the road before is short too
+    }
+    return end;
+}
+
 // The ego's run around an anchor: from run_up_m before it to overrun_m past
 // it (or to stop_before_m short of it), or why the track there cannot hold it.
 std::optional<std::string> place_run(const odd::OddProfile& profile, const std::vector<std::size_t>& on_line,
@@ -110,7 +125,8 @@ std::optional<std::string> place_run(const odd::OddProfile& profile, const std::
     if (t.ego.stop_before_m) {
         // The train's front stops short of the anchor: its reference point
         // (the middle) half a train further back.
-        a.end_chainage = a.chainage - *t.ego.stop_before_m - ego_half_length_m;
+        a.end_chainage = off_road_start(lines, a.line, a.chainage - *t.ego.stop_before_m - ego_half_length_m,
+                                        a.start_chainage);
         if (a.end_chainage - a.start_chainage < t.ego.min_run_up_m) {
             return "only " + std::to_string(static_cast<long>(run_up)) +
                    " m of track before the anchor, too little for the train to stop " + metres(*t.ego.stop_before_m) +
@@ -128,7 +144,8 @@ std::optional<std::string> place_run(const odd::OddProfile& profile, const std::
         return "only " + std::to_string(static_cast<long>(lines.end(a.line) - a.chainage)) +
                " m of track after the anchor, the train needs " + metres(past) + " m to run past it";
     }
-    a.end_chainage = std::min(lines.end(a.line), a.chainage + t.ego.overrun_m);
+    a.end_chainage = off_road_start(lines, a.line, std::min(lines.end(a.line), a.chainage + t.ego.overrun_m),
+                                    a.chainage + past);
     return std::nullopt;
 }
 

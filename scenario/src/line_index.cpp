@@ -276,6 +276,19 @@ const LineIndex::Piece* LineIndex::piece(std::size_t line, double chainage) cons
     return chainage <= p->c1 + eps ? &*p : nullptr;
 }
 
+double LineIndex::road_entry(std::size_t line, double chainage) const {
+    const Piece* p = piece(line, chainage);
+    if (!p) {
+        return chainage;
+    }
+    const auto& v = lines_.at(line);
+    auto i = static_cast<std::size_t>(p - v.data());
+    while (i > 0 && v[i - 1].road_id == p->road_id && std::abs(v[i - 1].c1 - v[i].c0) < 1e-3) {
+        --i;
+    }
+    return v[i].c0;
+}
+
 std::optional<LanePlacement> LineIndex::at(std::size_t line, double chainage) const {
     const Piece* p = piece(line, chainage);
     if (!p) {

@@ -39,6 +39,9 @@ public:
     // the profile has no such track. Its chainages up to the switch are the
     // track's own.
     std::optional<std::size_t> diverging(std::size_t switch_element) const;
+    // Where the line entered the road it is on at `chainage` (the chainage
+    // itself where no piece holds it).
+    double road_entry(std::size_t line, double chainage) const;
 
 private:
     struct Piece {
