@@ -122,3 +122,38 @@ TEST(ScenarioGenerate, AClassOnlyAnInfeasibleAnchorHoldsIsConstraintInfeasible) 
     }
     EXPECT_TRUE(found);
 }
+
+// A perturbation value every row of which an exclusion forbids is
+// "constraint infeasible" for the declared ODD, not "not drawn".
+TEST(ScenarioGenerate, ASpecValueOnlyAnExclusionForbidsIsConstraintInfeasible) {
+    Inputs in;
+    const auto dir = railodd::test::scratch_dir();
+    in.templates = load_templates(railodd::test::write_file(dir / "t.yaml", templates_yaml + R"(    perturbations:
+      rain: {element: Environmental Conditions/Weather/Rain, attribute: intensity, values: [0, 20]}
+    constraints:
+      exclude:
+        - {rain: 20}
+)"),
+                                  in.taxonomy, in.catalog);
+    const auto spec = odd::load_odd_spec(railodd::test::write_file(dir / "spec.yaml", R"(odd_spec: wet
+elements:
+  - path: Environmental Conditions/Weather/Rain
+    attributes: {intensity: {bins: [none, light, heavy]}}
+)"),
+                                         in.taxonomy);
+    const auto p = lines({100.0});
+    const Generation g = generate(p, in.templates, in.catalog, in.taxonomy, GenerateOptions{});
+    ASSERT_EQ(g.runs[0].infeasible_values.size(), 1u);
+    EXPECT_EQ(g.runs[0].infeasible_values[0], (std::pair<std::string, std::string>{"rain", "20"}));
+    const Coverage c = compute_coverage(p, in.taxonomy, g, &spec, &in.templates);
+    std::size_t infeasible = 0, no_template = 0;
+    for (const auto& item : c.spec) {
+        if (item.scenarios > 0) {
+            continue;
+        }
+        infeasible += item.reason.rfind("constraint infeasible", 0) == 0 ? 1 : 0;
+        no_template += item.reason == "no template varies it" ? 1 : 0;
+    }
+    EXPECT_EQ(infeasible, 1u) << "heavy: 20 mm/h";
+    EXPECT_EQ(no_template, 1u) << "light: no template lists it";
+}

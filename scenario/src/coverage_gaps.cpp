@@ -57,31 +57,36 @@ bool excluded_by(const odd::OddSpec& spec, const CoverageItem& item, const odd::
 }
 
 // Whether some template varies a value of the item (a perturbation, a
-// degraded mode's setting, an asset's attribute).
-bool varied_by(const TemplateSet& templates, const CoverageItem& item, const odd::Taxonomy& tax) {
+// degraded mode's setting): none, only in values no valid row holds, or in
+// some value a row can hold.
+enum class Varied { none, only_infeasible, feasible };
+
+Varied varied_by(const TemplateSet& templates, const Generation& g, const CoverageItem& item, const odd::Taxonomy& tax) {
     const odd::Element* el = tax.find(item.element);
     const odd::Attribute* a = el && !item.attribute.empty() ? tax.attribute(*el, item.attribute) : nullptr;
     auto holds = [&](const std::string& element, const std::string& attribute, const std::string& value) {
         return under(element, item.element) &&
                (item.attribute.empty() || (attribute == item.attribute && a && value_class(*a, value) == item.value_class));
     };
-    for (const auto& t : templates.templates) {
-        for (const auto& p : t.parameters) {
-            for (const auto& v : p.values) {
-                if (p.kind == ParameterKind::perturbation && holds(p.element, p.attribute, v)) {
-                    return true;
+    Varied out = Varied::none;
+    for (std::size_t t = 0; t < templates.templates.size(); ++t) {
+        for (const auto& p : templates.templates[t].parameters) {
+            for (std::size_t v = 0; v < p.values.size(); ++v) {
+                bool hit = p.kind == ParameterKind::perturbation && holds(p.element, p.attribute, p.values[v]);
+                for (const auto& s : v < p.modes.size() ? p.modes[v].sets : std::vector<ModeSetting>{}) {
+                    hit = hit || holds(s.element, s.attribute, s.value);
                 }
-            }
-            for (const auto& m : p.modes) {
-                for (const auto& s : m.sets) {
-                    if (holds(s.element, s.attribute, s.value)) {
-                        return true;
-                    }
+                if (!hit) {
+                    continue;
                 }
+                const auto& bad = t < g.runs.size() ? g.runs[t].infeasible_values
+                                                    : std::vector<std::pair<std::string, std::string>>{};
+                const bool feasible = std::find(bad.begin(), bad.end(), std::pair{p.name, p.values[v]}) == bad.end();
+                out = feasible ? Varied::feasible : (out == Varied::none ? Varied::only_infeasible : out);
             }
         }
     }
-    return false;
+    return out;
 }
 
 // An item no template anchors on (a line usage, a gauge) is exercised by the
@@ -193,9 +198,13 @@ void explain_gaps(Coverage& c, const odd::OddProfile& profile, const odd::Taxono
         } else if (item.on_route > 0 && templates) {
             item.reason = route_gap(item, profile, taxonomy, generation, *templates);
         } else if (templates) {
-            item.reason = varied_by(*templates, item, taxonomy)
-                              ? "not drawn: a template varies it, but no chosen row (constraints, --count) holds it"
-                              : "no template varies it";
+            switch (varied_by(*templates, generation, item, taxonomy)) {
+            case Varied::feasible: item.reason = "not drawn: a template varies it, but no chosen row (--count) holds it"; break;
+            case Varied::only_infeasible:
+                item.reason = "constraint infeasible: the templates that vary it exclude every row holding it";
+                break;
+            case Varied::none: item.reason = "no template varies it"; break;
+            }
         }
     }
 }

@@ -47,6 +47,14 @@ std::string label(const CoverageItem& i) {
     return i.attribute.empty() ? i.element : i.element + " | " + i.attribute + " = " + i.value_class;
 }
 
+ojson infeasible_values(const TemplateRun& r) {
+    ojson out = ojson::array();
+    for (const auto& [name, value] : r.infeasible_values) {
+        out.push_back({{"parameter", name}, {"value", value}});
+    }
+    return out;
+}
+
 // Under the cover strategy: the set against pairwise over all anchors and
 // the full factorial of the same templates.
 struct Selection {
@@ -95,7 +103,7 @@ ojson coverage_json(const Coverage& c) {
             skipped.push_back({{"element", s.element}, {"reason", s.reason}});
         }
         pairs.push_back({{"template", r.template_id}, {"anchors", r.anchors}, {"anchors_skipped", std::move(skipped)},
-                         {"anchors_infeasible", r.infeasible.size()},
+                         {"anchors_infeasible", r.infeasible.size()}, {"infeasible_values", infeasible_values(r)},
                          {"rows", r.rows}, {"dimensions", std::move(dims)}, {"pairs_feasible", r.pairs.feasible},
                          {"pairs_covered", r.pairs.covered}, {"pairs_infeasible", r.pairs.infeasible},
                          {"ratio", ratio(r.pairs.covered, r.pairs.feasible)}});

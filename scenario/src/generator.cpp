@@ -99,7 +99,7 @@ std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity&
 }
 
 std::string scenario_id(const std::string& tmpl, std::size_t n) {
-    char buf[16];
+    char buf[32];
     std::snprintf(buf, sizeof buf, "_%04zu", n);
     return tmpl + buf;
 }
@@ -171,8 +171,9 @@ std::vector<std::size_t> parameter_sizes(const Template& t, std::vector<std::siz
     return run.sizes;
 }
 
-// Per anchor, whether the constraints admit some row there; the others are
-// recorded in the run (coverage says "constraint infeasible").
+// Per anchor, whether the constraints admit some row there; the others, and
+// the parameter values no valid row holds, are recorded in the run (coverage
+// says "constraint infeasible").
 std::vector<char> feasible_anchors(const TemplateContext& ctx, TemplateRun& run) {
     const Validity valid = validity(ctx);
     std::vector<char> out(ctx.anchors.size(), 0);
@@ -182,6 +183,15 @@ std::vector<char> feasible_anchors(const TemplateContext& ctx, TemplateRun& run)
         out[a] = completable(run.sizes, valid, r) ? 1 : 0;
         if (!out[a]) {
             run.infeasible.push_back(ctx.anchors[a].element);
+        }
+    }
+    for (std::size_t d = 1; d < run.sizes.size() && !ctx.anchors.empty(); ++d) {
+        for (std::size_t v = 0; v < run.sizes[d]; ++v) {
+            Row r(run.sizes.size(), kUnset);
+            r[d] = v;
+            if (!completable(run.sizes, valid, r)) {
+                run.infeasible_values.emplace_back(run.dimensions[d], ctx.tmpl.parameters[ctx.varied[d - 1]].values[v]);
+            }
         }
     }
     return out;

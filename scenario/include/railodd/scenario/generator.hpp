@@ -55,6 +55,9 @@ struct TemplateRun {
     // Anchors (their profile elements) where the constraints admit no row,
     // e.g. a speed limit below every ego speed of the template.
     std::vector<std::size_t> infeasible;
+    // Parameter values no valid row holds (an exclusion, a speed above every
+    // limit): (parameter, value).
+    std::vector<std::pair<std::string, std::string>> infeasible_values;
     std::vector<std::string> dimensions;  // "anchor", then the varied parameters
     std::vector<std::size_t> sizes;
     std::size_t rows = 0;
