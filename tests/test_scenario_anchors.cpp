@@ -206,6 +206,14 @@ TEST(ScenarioAnchors, LinesRunOnAcrossTheSwitchThroughOrDiverging) {
     EXPECT_EQ(w.back().road_id, "12");
     EXPECT_DOUBLE_EQ(w.back().s, 100.0);
 
+    // The switch's other track, measured from the switch: the branch, against its s.
+    const auto on_branch = lines.branch_place(3, 100.0);
+    ASSERT_TRUE(on_branch);
+    EXPECT_EQ(on_branch->road_id, "12");
+    EXPECT_DOUBLE_EQ(on_branch->s, 300.0);
+    EXPECT_FALSE(lines.branch_place(3, 450.0)) << "the branch is 400 m long";
+    EXPECT_FALSE(lines.branch_place(0, 10.0)) << "not a switch";
+
     // A template that runs onto the diverging track anchors on that line.
     Template t;
     t.id = "div";

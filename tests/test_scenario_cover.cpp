@@ -215,7 +215,8 @@ TEST_F(ScenarioCover, GapsSayWhy) {
 
 // At a facing switch the through template runs on along the main track and
 // the diverging one onto the branch: their routes part at the switch, and the
-// diverging run's obstacle stands on a road only the diverging run takes.
+// diverging run's obstacle stands on a road only the diverging run takes. At
+// a trailing switch the stock stands on the joining track, off the route.
 TEST_F(ScenarioCover, DivergingRunTakesTheSwitchsBranch) {
     const fs::path out = root() / "switch";
     ASSERT_EQ(scenarios(out, "--strategy pairwise").exit_code, 0);
@@ -227,6 +228,11 @@ TEST_F(ScenarioCover, DivergingRunTakesTheSwitchsBranch) {
         const auto roads = s["ego"]["route_roads"].get<std::vector<std::string>>();
         if (s["template"] == "facing_switch_obstacle") {
             through[node] = roads;
+        } else if (s["template"] == "trailing_switch_stabled_stock") {
+            // The stock stands on the joining track: a road the train does not run on.
+            const std::string stock = s["actors"][0]["start"]["road_id"];
+            EXPECT_EQ(std::find(roads.begin(), roads.end(), stock), roads.end()) << s["id"];
+            EXPECT_EQ(s["actors"][0]["place"], "branch_track");
         } else if (s["template"] == "facing_switch_diverging") {
             diverging[node] = roads;
             obstacle[node] = s["actors"][0]["start"]["road_id"];

@@ -363,6 +363,9 @@ TEST(ScenarioTemplates, RefusesActorsAndAssetsTheCatalogDoesNotHave) {
     const int place = line_with(templates_yaml, "place: crossing_approach");
     expect_templates_refused(edit(templates_yaml, "place: crossing_approach", "place: on_roof"), place,
                              {"actor 'Person'", "'place' must be on_track", "not 'on_roof'"});
+    // The switch's other track exists only at a switch anchor.
+    expect_templates_refused(edit(templates_yaml, "place: crossing_approach", "place: branch_track"), place,
+                             {"actor 'Person'", "place branch_track needs a switch anchor"});
 }
 
 TEST(ScenarioTemplates, RefusesPerturbationsWithoutMappingOrOutsideTheTaxonomy) {

@@ -179,6 +179,17 @@ std::optional<std::string> road_user_place(const odd::TaggedElement& e, const Te
     return std::nullopt;
 }
 
+// An actor on the switch's other track needs that track, long enough.
+std::optional<std::string> branch_actors(const LineIndex& lines, const Template& t, std::size_t element) {
+    for (const auto& actor : t.actors) {
+        if (actor.place == Lateral::branch_track && !lines.branch_place(element, std::abs(actor.along_m))) {
+            return "no other track at the switch " + std::to_string(static_cast<long>(std::abs(actor.along_m))) +
+                   " m long for " + actor.name;
+        }
+    }
+    return std::nullopt;
+}
+
 // A run onto a switch's diverging track takes the switch's diverging line.
 std::optional<std::string> diverging_run(const LineIndex& lines, const Template& t, std::size_t element, Anchor& a) {
     if (!t.anchor.diverging) {
@@ -237,6 +248,8 @@ Anchoring find_anchors(const odd::OddProfile& profile, const LineIndex& lines, c
         if (auto why = road_user_place(e, t)) {
             out.skipped.push_back({i, std::move(*why)});
         } else if (auto no = diverging_run(lines, t, i, a)) {
+            out.skipped.push_back({i, std::move(*no)});
+        } else if (auto no = branch_actors(lines, t, i)) {
             out.skipped.push_back({i, std::move(*no)});
         } else if (auto why = place_run(profile, on_line, lines, t, ego_half_length_m, a)) {
             out.skipped.push_back({i, std::move(*why)});

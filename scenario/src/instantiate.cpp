@@ -50,6 +50,7 @@ double lateral_offset(Lateral l, double side) {
     case Lateral::beside_track: return side * beside_track_m;
     case Lateral::crossing_approach: return side * crossing_approach_m;
     case Lateral::adjacent_track: return side * adjacent_track_m;
+    case Lateral::branch_track: return 0.0;
     }
     return 0.0;
 }
@@ -175,6 +176,9 @@ Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asse
                           : std::nullopt;
     if (road) {
         actor.start = road->front();
+    }
+    if (t.place == Lateral::branch_track) { // find_anchors skipped switches without the branch
+        actor.start = ctx.lines.branch_place(a.element, std::abs(t.along_m)).value_or(actor.start);
     }
     if (t.move_to) {
         actor.move_to = to_string(*t.move_to);

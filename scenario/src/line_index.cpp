@@ -14,6 +14,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 namespace railodd::scenario {
 
@@ -117,6 +118,11 @@ LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.alon
     if (along_route_ || profile.track_ends.empty()) {
         return;
     }
+    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
+        if (auto b = branch_of(profile, i)) {
+            branches_.emplace(i, *b);
+        }
+    }
     std::map<std::size_t, std::vector<Piece>> extended;
     for (const auto& t : profile.track_ends) {
         if (lines_.contains(t.track)) {
@@ -195,8 +201,12 @@ std::vector<LineIndex::Piece> LineIndex::extend(const std::vector<odd::TrackEnd>
 // track the line came from or continues on at that node, and leaving the
 // node within max_turn_rad of the line's heading where that is known (at a
 // track end). Where several remain (a slip), the lowest track number.
-std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
-    const odd::OddProfile& profile, std::size_t element, const std::map<std::size_t, std::vector<Piece>>& extended) const {
+// The switch's other track: at the switch's node, not the switch's own track
+// nor the track its line came from or runs on to there, leaving the node
+// ahead (facing) or behind (trailing) within max_turn_rad of the line's
+// heading where that is known (at a track end); mid-track the other track at
+// the node. Where several remain (a slip), the lowest track number.
+std::optional<LineIndex::Branch> LineIndex::branch_of(const odd::OddProfile& profile, std::size_t element) const {
     const auto& e = profile.elements[element];
     const auto node = switch_node(e);
     const auto own = std::find_if(profile.track_ends.begin(), profile.track_ends.end(),
@@ -204,6 +214,9 @@ std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
     if (!node || own == profile.track_ends.end() || !lines_.contains(e.track)) {
         return std::nullopt;
     }
+    const auto* direction = e.find("direction");
+    const bool behind = direction && std::holds_alternative<std::string>(*direction) &&
+                        std::get<std::string>(*direction) == "trailing";
     const double c = e.chainage_start;
     const bool at_start = own->from_node == *node && std::abs(c - start(e.track)) < 1.0;
     const bool at_end = own->to_node == *node && std::abs(c - end(e.track)) < 1.0;
@@ -220,10 +233,39 @@ std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
             taken.insert(through->track);
         }
     }
-    const auto branch = branch_at(profile.track_ends, *node, heading, taken);
-    if (!branch || !lines_.contains(branch->track)) {
+    if (heading && behind) {
+        *heading += std::numbers::pi;
+    }
+    const auto next = branch_at(profile.track_ends, *node, heading, taken);
+    if (!next || !lines_.contains(next->track)) {
         return std::nullopt;
     }
+    return Branch{next->track, next->against, start(next->track), end(next->track)};
+}
+
+std::optional<LanePlacement> LineIndex::branch_place(std::size_t switch_element, double distance) const {
+    const auto b = branches_.find(switch_element);
+    if (b == branches_.end() || distance > b->second.c_end - b->second.c_start) {
+        return std::nullopt;
+    }
+    const Branch& br = b->second;
+    return at(br.track, br.against ? br.c_end - distance : br.c_start + distance);
+}
+
+std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
+    const odd::OddProfile& profile, std::size_t element, const std::map<std::size_t, std::vector<Piece>>& extended) const {
+    const auto& e = profile.elements[element];
+    const auto b = branches_.find(element);
+    const auto* direction = e.find("direction");
+    const bool trailing = direction && std::holds_alternative<std::string>(*direction) &&
+                          std::get<std::string>(*direction) == "trailing";
+    if (b == branches_.end() || trailing) {
+        return std::nullopt; // a trailing switch's branch lies behind the train
+    }
+    const Next entry{b->second.track, b->second.against};
+    const Next* branch = &entry;
+    const double c = e.chainage_start;
+    std::set<std::size_t> taken{e.track};
     std::vector<Piece> out;
     for (Piece p : extended.at(e.track)) {
         if (p.c0 >= c - eps) {

@@ -184,12 +184,12 @@ void TemplateLoader::ego(const YAML::Node& node, Template& t, const std::string&
 Lateral TemplateLoader::lateral(const YAML::Node& v, const std::string& what) {
     const auto s = yaml::scalar(file_, v, what);
     for (const auto l : {Lateral::on_track, Lateral::platform_edge, Lateral::beside_track, Lateral::crossing_approach,
-                         Lateral::adjacent_track}) {
+                         Lateral::adjacent_track, Lateral::branch_track}) {
         if (s == to_string(l)) {
             return l;
         }
     }
-    yaml::fail(file_, v, what + " must be on_track, platform_edge, beside_track, crossing_approach or adjacent_track, not '" +
+    yaml::fail(file_, v, what + " must be on_track, platform_edge, beside_track, crossing_approach, adjacent_track or branch_track, not '" +
                              s + "'");
 }
 
@@ -223,6 +223,11 @@ ActorTemplate TemplateLoader::actor(const YAML::Node& node, const Template& t, c
         a.hazard_before_m = yaml::number(file_, node["hazard_before_m"], w + ": 'hazard_before_m'");
     }
     yaml::require(file_, node, !a.move_to || a.move_speed_kmh > 0.0, w + ": 'move_to' needs a positive 'move_speed_kmh'");
+    yaml::require(file_, node["place"] ? node["place"] : node,
+                  a.place != Lateral::branch_track || t.anchor.element.rfind("Scenery/Track layout/Switch", 0) == 0,
+                  w + ": place branch_track needs a switch anchor, not '" + t.anchor.element + "'");
+    yaml::require(file_, node["move_to"] ? node["move_to"] : node, a.move_to != Lateral::branch_track,
+                  w + ": an actor cannot move onto the branch track");
     if (node["behaviour"]) a.behaviour = yaml::scalar(file_, node["behaviour"], w + ": 'behaviour'");
     return a;
 }
@@ -281,6 +286,7 @@ const char* to_string(Lateral lateral) {
     case Lateral::beside_track: return "beside_track";
     case Lateral::crossing_approach: return "crossing_approach";
     case Lateral::adjacent_track: return "adjacent_track";
+    case Lateral::branch_track: return "branch_track";
     }
     return "?";
 }

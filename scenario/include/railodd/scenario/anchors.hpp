@@ -39,6 +39,10 @@ public:
     // the profile has no such track. Its chainages up to the switch are the
     // track's own.
     std::optional<std::size_t> diverging(std::size_t switch_element) const;
+    // The rail lane `distance` metres from a switch along its other track
+    // (the diverging track of a facing switch, the joining one of a trailing
+    // switch), away from the switch; nullopt where there is none or it is shorter.
+    std::optional<LanePlacement> branch_place(std::size_t switch_element, double distance) const;
     // Where the line entered the road it is on at `chainage` (the chainage
     // itself where no piece holds it).
     double road_entry(std::size_t line, double chainage) const;
@@ -53,6 +57,13 @@ private:
     bool along_route_ = false;
     std::map<std::size_t, std::vector<Piece>> lines_; // by chainage
     std::map<std::size_t, std::size_t> diverging_;    // switch element -> its diverging line
+    struct Branch {
+        std::size_t track = 0;
+        bool against = false;            // entered at its end: run against its chainage
+        double c_start = 0.0, c_end = 0.0; // the track's own chainages
+    };
+    std::map<std::size_t, Branch> branches_;          // switch element -> its other track
+    std::optional<Branch> branch_of(const odd::OddProfile& profile, std::size_t element) const;
     const Piece* piece(std::size_t line, double chainage) const;
     std::vector<Piece> extend(const std::vector<odd::TrackEnd>& ends, const odd::TrackEnd& own) const;
     double append(std::vector<Piece>& out, std::size_t track, bool against, bool forward, double at) const;

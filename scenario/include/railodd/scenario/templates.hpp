@@ -51,9 +51,12 @@ struct ContextRequirement : ElementMatch {
 // Where an actor stands, across the track: on the rail lane, at the platform
 // edge (on the platform's side), beside the track, or on the road approaching
 // a level crossing.
+// branch_track: on a switch anchor's other track (the diverging one of a
+// facing switch, the joining one of a trailing switch), |along_m| from the
+// switch along it.
 // adjacent_track: where a neighbouring track of a double line lies (4.0 m
 // centre to centre), on the platform's side or the left.
-enum class Lateral { on_track, platform_edge, beside_track, crossing_approach, adjacent_track };
+enum class Lateral { on_track, platform_edge, beside_track, crossing_approach, adjacent_track, branch_track };
 const char* to_string(Lateral lateral);
 
 struct EgoTemplate {
