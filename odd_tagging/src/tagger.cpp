@@ -25,6 +25,16 @@ std::string text_of(const AttributeValue& v) {
     return std::get<std::string>(v);
 }
 
+// Where track e starts and ends: chainage runs along the alignment, which may
+// run against the graph edge's node order.
+TrackEnd track_end(const TaggerInput& input, std::size_t e, const geometry::IndexedAlignment& a) {
+    const auto& edge = input.map_input.tracks.edges[e];
+    const auto& v = input.map_input.tracks.vertices;
+    const bool against = input.map_input.fitted_tracks.edges[e].reversed;
+    const std::size_t from = against ? edge.to : edge.from, to = against ? edge.from : edge.to;
+    return {e, v[from].node_id, v[to].node_id, a.evaluate(0.0).hdg, a.evaluate(a.length()).hdg};
+}
+
 } // namespace
 
 OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
@@ -39,13 +49,7 @@ OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
             const auto& a = ctx.alignment(e);
             p.length_m += a.length();
             ++p.tracks;
-            // Chainage runs along the alignment, which may run against the
-            // graph edge's node order.
-            const auto& edge = input.map_input.tracks.edges[e];
-            const bool against = input.map_input.fitted_tracks.edges[e].reversed;
-            const auto& v = input.map_input.tracks.vertices;
-            p.track_ends.push_back({e, v[against ? edge.to : edge.from].node_id, v[against ? edge.from : edge.to].node_id,
-                                    a.evaluate(0.0).hdg, a.evaluate(a.length()).hdg});
+            p.track_ends.push_back(track_end(input, e, a));
         }
     }
     // Scenery from the geometry, then from the ways' tags and the features;

@@ -36,9 +36,12 @@ bool fill(const std::vector<std::size_t>& sizes, const Validity& valid, Row& row
 
 } // namespace
 
-bool completable(const std::vector<std::size_t>& sizes, const Validity& valid, Row row) {
+std::optional<Row> completed(const std::vector<std::size_t>& sizes, const Validity& valid, Row row) {
     std::size_t budget = 20000; // as the pairwise completion: a pathological constraint set cannot stall a run
-    return row.size() == sizes.size() && !empty_domain(sizes) && valid(row) && fill(sizes, valid, row, 0, budget);
+    if (row.size() == sizes.size() && !empty_domain(sizes) && valid(row) && fill(sizes, valid, row, 0, budget)) {
+        return row;
+    }
+    return std::nullopt;
 }
 
 bool any_anchor(std::size_t anchors, const Validity& valid, const Row& params) {
@@ -86,8 +89,8 @@ std::vector<Row> cover_rows(const std::vector<std::size_t>& sizes, const Validit
             ++turn;
         }
     }
-    // Chosen anchors no row took: the first row valid there, else a valid
-    // row of that anchor (pairwise restricted to it).
+    // Chosen anchors no row took: the first row valid there, else any valid
+    // row of that anchor.
     for (const std::size_t a : anchors) {
         if (used.contains(a)) {
             continue;
@@ -99,11 +102,10 @@ std::vector<Row> cover_rows(const std::vector<std::size_t>& sizes, const Validit
                 placed = true;
             }
         }
-        if (!placed) {
-            const auto at_a = pairwise(sizes, [&](const Row& r) { return (r[0] == kUnset || r[0] == a) && valid(r); });
-            if (!at_a.empty()) {
-                out.push_back(at_a.front());
-            }
+        Row at_a(sizes.size(), kUnset);
+        at_a[0] = a;
+        if (auto r = placed ? std::nullopt : completed(sizes, valid, at_a)) {
+            out.push_back(std::move(*r));
         }
     }
     return out;

@@ -69,18 +69,18 @@ Varied varied_by(const TemplateSet& templates, const Generation& g, const Covera
                (item.attribute.empty() || (attribute == item.attribute && a && value_class(*a, value) == item.value_class));
     };
     Varied out = Varied::none;
-    for (std::size_t t = 0; t < templates.templates.size(); ++t) {
+    for (std::size_t t = 0; t < templates.templates.size() && t < g.runs.size(); ++t) {
+        const auto& bad = g.runs[t].infeasible_values;
         for (const auto& p : templates.templates[t].parameters) {
             for (std::size_t v = 0; v < p.values.size(); ++v) {
                 bool hit = p.kind == ParameterKind::perturbation && holds(p.element, p.attribute, p.values[v]);
-                for (const auto& s : v < p.modes.size() ? p.modes[v].sets : std::vector<ModeSetting>{}) {
+                for (std::size_t k = 0; v < p.modes.size() && k < p.modes[v].sets.size(); ++k) {
+                    const ModeSetting& s = p.modes[v].sets[k];
                     hit = hit || holds(s.element, s.attribute, s.value);
                 }
                 if (!hit) {
                     continue;
                 }
-                const auto& bad = t < g.runs.size() ? g.runs[t].infeasible_values
-                                                    : std::vector<std::pair<std::string, std::string>>{};
                 const bool feasible = std::find(bad.begin(), bad.end(), std::pair{p.name, p.values[v]}) == bad.end();
                 out = feasible ? Varied::feasible : (out == Varied::none ? Varied::only_infeasible : out);
             }

@@ -132,16 +132,22 @@ namespace {
 
 // Numbers every map item (element, attribute, class) an anchor of a template
 // exercises, for the set cover of `--strategy cover`: candidates[t][a] lists
-// the items of anchor a of template t.
+// the items of anchor a of template t, none where no row is feasible there.
 std::vector<std::vector<std::vector<std::size_t>>> anchor_items(const std::deque<TemplateContext>& ctxs,
+                                                                const std::vector<std::vector<char>>& feasible,
                                                                 std::size_t& item_count) {
     std::map<std::tuple<std::string, std::string, std::string>, std::size_t> ids;
     std::vector<std::vector<std::vector<std::size_t>>> out;
-    for (const auto& ctx : ctxs) {
+    for (std::size_t k = 0; k < ctxs.size(); ++k) {
+        const TemplateContext& ctx = ctxs[k];
         auto& per_anchor = out.emplace_back();
-        for (const auto& cover : ctx.anchor_cover) {
+        for (std::size_t a = 0; a < ctx.anchor_cover.size(); ++a) {
             std::set<std::size_t> items;
-            for (const auto& v : cover) {
+            if (!feasible[k][a]) {
+                per_anchor.emplace_back(); // no scenario can stand there
+                continue;
+            }
+            for (const auto& v : ctx.anchor_cover[a]) {
                 const odd::Element* el = ctx.taxonomy.find(v.element);
                 const odd::Attribute* a = el && !v.attribute.empty() ? ctx.taxonomy.attribute(*el, v.attribute) : nullptr;
                 if (v.attribute.empty() || (a && countable(*a))) {
@@ -155,8 +161,8 @@ std::vector<std::vector<std::vector<std::size_t>>> anchor_items(const std::deque
     return out;
 }
 
-std::vector<std::size_t> parameter_sizes(const Template& t, std::vector<std::size_t>& varied, TemplateRun& run,
-                                         std::size_t anchors) {
+// The run's dimensions: the anchor, then each varied parameter.
+void parameter_sizes(const Template& t, std::vector<std::size_t>& varied, TemplateRun& run, std::size_t anchors) {
     run.template_id = t.id;
     run.anchors = anchors;
     run.dimensions.push_back("anchor");
@@ -168,7 +174,6 @@ std::vector<std::size_t> parameter_sizes(const Template& t, std::vector<std::siz
             run.sizes.push_back(t.parameters[i].values.size());
         }
     }
-    return run.sizes;
 }
 
 // Per anchor, whether the constraints admit some row there; the others, and
@@ -242,14 +247,7 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
     std::vector<std::vector<std::size_t>> chosen;
     if (options.strategy == Strategy::cover) {
         std::size_t items = 0;
-        auto candidates = anchor_items(ctxs, items);
-        for (std::size_t k = 0; k < candidates.size(); ++k) {
-            for (std::size_t a = 0; a < candidates[k].size(); ++a) {
-                if (!feasible[k][a]) {
-                    candidates[k][a].clear(); // no scenario can stand there
-                }
-            }
-        }
+        const auto candidates = anchor_items(ctxs, feasible, items);
         chosen = choose_anchors(candidates, items, options.seed);
     }
     std::set<std::string> used_assets;

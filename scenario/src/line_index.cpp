@@ -14,6 +14,8 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <variant>
 
 namespace railodd::scenario {
@@ -62,6 +64,23 @@ std::optional<Next> continuation(const std::vector<odd::TrackEnd>& ends, std::in
         }
     }
     return best;
+}
+
+const odd::TrackEnd* end_of(const std::vector<odd::TrackEnd>& ends, std::size_t track) {
+    const auto it = std::find_if(ends.begin(), ends.end(), [&](const odd::TrackEnd& t) { return t.track == track; });
+    return it == ends.end() ? nullptr : &*it;
+}
+
+// Where a track entered at one end is left (its other end) and the heading of
+// travel there: run along its chainage or against it, forward or backwards.
+std::pair<std::int64_t, double> exit_of(const odd::TrackEnd& t, bool against, bool forward) {
+    const bool at_to = forward != against;
+    return {at_to ? t.to_node : t.from_node, (at_to ? t.to_heading : t.from_heading) + (against ? std::numbers::pi : 0.0)};
+}
+
+bool trailing(const odd::TaggedElement& e) {
+    const auto* d = e.find("direction");
+    return d && std::holds_alternative<std::string>(*d) && std::get<std::string>(*d) == "trailing";
 }
 
 // The OSM node of a switch element ("node:123"), if it is one.
@@ -131,10 +150,10 @@ LineIndex::LineIndex(const odd::OddProfile& profile) : along_route_(profile.alon
     }
     // Diverging lines: the run-up of their track's extended line, then the
     // tracks' own pieces. Numbered above every track.
-    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        if (auto line = diverging_line(profile, i, extended)) {
+    for (const auto& [i, branch] : branches_) {
+        if (!branch.trailing) { // a trailing switch's other track lies behind the train
             diverging_[i] = diverging_base + i;
-            extended[diverging_base + i] = std::move(*line);
+            extended[diverging_base + i] = diverging_line(profile, i, extended);
         }
     }
     lines_ = std::move(extended);
@@ -174,15 +193,10 @@ void LineIndex::run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>
             break;
         }
         used.insert(next->track);
-        const auto& te = *std::find_if(ends.begin(), ends.end(),
-                                       [&](const odd::TrackEnd& x) { return x.track == next->track; });
         const double len = append(out, next->track, next->against, forward, at);
         at += forward ? len : -len;
         added += len;
-        // Leaving the track at its other end.
-        const bool leave_at_to = forward != next->against;
-        node = leave_at_to ? te.to_node : te.from_node;
-        heading = (leave_at_to ? te.to_heading : te.from_heading) + (next->against ? std::numbers::pi : 0.0);
+        std::tie(node, heading) = exit_of(*end_of(ends, next->track), next->against, forward);
     }
 }
 
@@ -209,14 +223,11 @@ std::vector<LineIndex::Piece> LineIndex::extend(const std::vector<odd::TrackEnd>
 std::optional<LineIndex::Branch> LineIndex::branch_of(const odd::OddProfile& profile, std::size_t element) const {
     const auto& e = profile.elements[element];
     const auto node = switch_node(e);
-    const auto own = std::find_if(profile.track_ends.begin(), profile.track_ends.end(),
-                                  [&](const odd::TrackEnd& t) { return t.track == e.track; });
-    if (!node || own == profile.track_ends.end() || !lines_.contains(e.track)) {
+    const odd::TrackEnd* own = end_of(profile.track_ends, e.track);
+    if (!node || !own || !lines_.contains(e.track)) {
         return std::nullopt;
     }
-    const auto* direction = e.find("direction");
-    const bool behind = direction && std::holds_alternative<std::string>(*direction) &&
-                        std::get<std::string>(*direction) == "trailing";
+    const bool behind = trailing(e);
     const double c = e.chainage_start;
     const bool at_start = own->from_node == *node && std::abs(c - start(e.track)) < 1.0;
     const bool at_end = own->to_node == *node && std::abs(c - end(e.track)) < 1.0;
@@ -240,7 +251,7 @@ std::optional<LineIndex::Branch> LineIndex::branch_of(const odd::OddProfile& pro
     if (!next || !lines_.contains(next->track)) {
         return std::nullopt;
     }
-    return Branch{next->track, next->against, start(next->track), end(next->track)};
+    return Branch{next->track, next->against, behind, start(next->track), end(next->track)};
 }
 
 std::optional<LanePlacement> LineIndex::branch_place(std::size_t switch_element, double distance) const {
@@ -252,20 +263,11 @@ std::optional<LanePlacement> LineIndex::branch_place(std::size_t switch_element,
     return at(br.track, br.against ? br.c_end - distance : br.c_start + distance);
 }
 
-std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
-    const odd::OddProfile& profile, std::size_t element, const std::map<std::size_t, std::vector<Piece>>& extended) const {
+std::vector<LineIndex::Piece> LineIndex::diverging_line(const odd::OddProfile& profile, std::size_t element,
+                                                       const std::map<std::size_t, std::vector<Piece>>& extended) const {
     const auto& e = profile.elements[element];
-    const auto b = branches_.find(element);
-    const auto* direction = e.find("direction");
-    const bool trailing = direction && std::holds_alternative<std::string>(*direction) &&
-                          std::get<std::string>(*direction) == "trailing";
-    if (b == branches_.end() || trailing) {
-        return std::nullopt; // a trailing switch's branch lies behind the train
-    }
-    const Next entry{b->second.track, b->second.against};
-    const Next* branch = &entry;
+    const Branch& branch = branches_.at(element);
     const double c = e.chainage_start;
-    std::set<std::size_t> taken{e.track};
     std::vector<Piece> out;
     for (Piece p : extended.at(e.track)) {
         if (p.c0 >= c - eps) {
@@ -277,13 +279,9 @@ std::optional<std::vector<LineIndex::Piece>> LineIndex::diverging_line(
         }
         out.push_back(p);
     }
-    const auto& te = *std::find_if(profile.track_ends.begin(), profile.track_ends.end(),
-                                   [&](const odd::TrackEnd& t) { return t.track == branch->track; });
-    const double len = append(out, branch->track, branch->against, true, c);
-    taken.insert(branch->track);
-    const std::int64_t far = branch->against ? te.from_node : te.to_node;
-    const double far_heading = branch->against ? te.from_heading + std::numbers::pi : te.to_heading;
-    run_on(out, profile.track_ends, far, far_heading, true, c + len, taken);
+    const double len = append(out, branch.track, branch.against, true, c);
+    const auto [far, far_heading] = exit_of(*end_of(profile.track_ends, branch.track), branch.against, true);
+    run_on(out, profile.track_ends, far, far_heading, true, c + len, {e.track, branch.track});
     std::stable_sort(out.begin(), out.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
     return out;
 }

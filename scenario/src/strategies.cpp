@@ -67,7 +67,8 @@ public:
         return false;
     }
 
-    // Up to `max` open pairs from first_open's cursor on, without moving it.
+    // Up to `max` open pairs {dimension i, value, dimension j, value} from
+    // first_open's cursor on, without moving it.
     std::vector<std::array<std::size_t, 4>> next_open(std::size_t max) const {
         std::vector<std::array<std::size_t, 4>> out;
         std::size_t ci = ci_, cj = cj_, ck = ck_;
@@ -160,6 +161,24 @@ private:
 
 constexpr std::size_t pairwise_candidates = 24;
 
+// Of the row `r` (complete, valid) and rows grown from the next open pairs,
+// the one closing most open pairs (AETG's candidates, deterministic).
+Row best_candidate(Row r, const PairTable& open, Completion& complete, const Validity& valid) {
+    std::size_t best = open.gain(r);
+    for (const auto& pair : open.next_open(pairwise_candidates)) {
+        Row c(r.size(), kUnset);
+        c[pair[0]] = pair[1];
+        c[pair[2]] = pair[3];
+        if (valid(c) && complete(c)) {
+            if (const std::size_t g = open.gain(c); g > best) {
+                best = g;
+                r = std::move(c);
+            }
+        }
+    }
+    return r;
+}
+
 bool empty_domain(const std::vector<std::size_t>& sizes) {
     for (const auto s : sizes) {
         if (s == 0) {
@@ -245,20 +264,7 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
             open.close(i, vi, j, vj); // no valid row holds it: infeasible, not a gap
             continue;
         }
-        // Rows grown from the next open pairs too: the one closing most
-        // pairs is kept (AETG's candidates, deterministic).
-        std::size_t best = open.gain(r);
-        for (const auto& [ci, cvi, cj, cvj] : open.next_open(pairwise_candidates)) {
-            Row c(sizes.size(), kUnset);
-            c[ci] = cvi;
-            c[cj] = cvj;
-            if (valid(c) && complete(c)) {
-                if (const std::size_t g = open.gain(c); g > best) {
-                    best = g;
-                    r = std::move(c);
-                }
-            }
-        }
+        r = best_candidate(std::move(r), open, complete, valid);
         open.close_row(r);
         rows.push_back(std::move(r));
     }

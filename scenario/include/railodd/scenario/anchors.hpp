@@ -60,6 +60,7 @@ private:
     struct Branch {
         std::size_t track = 0;
         bool against = false;            // entered at its end: run against its chainage
+        bool trailing = false;           // joins from behind the train: no diverging run
         double c_start = 0.0, c_end = 0.0; // the track's own chainages
     };
     std::map<std::size_t, Branch> branches_;          // switch element -> its other track
@@ -69,8 +70,8 @@ private:
     double append(std::vector<Piece>& out, std::size_t track, bool against, bool forward, double at) const;
     void run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>& ends, std::int64_t node, double heading,
                 bool forward, double at, std::set<std::size_t> used) const;
-    std::optional<std::vector<Piece>> diverging_line(const odd::OddProfile& profile, std::size_t element,
-                                                     const std::map<std::size_t, std::vector<Piece>>& extended) const;
+    std::vector<Piece> diverging_line(const odd::OddProfile& profile, std::size_t element,
+                                      const std::map<std::size_t, std::vector<Piece>>& extended) const;
 };
 
 struct Anchor {

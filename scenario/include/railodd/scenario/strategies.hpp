@@ -8,7 +8,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace railodd::scenario {
@@ -46,9 +48,13 @@ std::vector<Row> pairwise(const std::vector<std::size_t>& sizes, const Validity&
 std::vector<Row> cover_rows(const std::vector<std::size_t>& sizes, const Validity& valid,
                             const std::vector<std::size_t>& anchors);
 
-// Whether some valid complete row extends `row` (its kUnset entries filled),
-// by a bounded depth-first search.
-bool completable(const std::vector<std::size_t>& sizes, const Validity& valid, Row row);
+// The first valid complete row that extends `row` (its kUnset entries
+// filled, lowest values first), by a bounded depth-first search; none if
+// there is none within the bound.
+std::optional<Row> completed(const std::vector<std::size_t>& sizes, const Validity& valid, Row row);
+inline bool completable(const std::vector<std::size_t>& sizes, const Validity& valid, Row row) {
+    return completed(sizes, valid, std::move(row)).has_value();
+}
 
 // Whether some anchor 0..anchors-1 admits the (partial) parameter row.
 bool any_anchor(std::size_t anchors, const Validity& valid, const Row& params);
