@@ -1,0 +1,223 @@
+#!/usr/bin/env node
+// Headless-browser check of a railodd HTML report (issue 21).
+//
+//   node tests/report/check_report.mjs REPORT.html --map MAPDIR [--scenarios DIR]
+//        [--screenshot PNG] [--full-page] [--timing]
+//
+// Opens the report from disk (file://) in Chromium and fails on any console error or
+// warning, page error, or request that is not file:// or data:. Once the page says it
+// is ready, it compares what is drawn with figures read here, independently of the
+// report's embedded data, from the map folder (report.json, map.xodr, odd_profile.json)
+// and the scenario folder (manifest.json). Exit code 0 only when every check passes.
+import {createRequire} from 'node:module';
+import {readFileSync, statSync} from 'node:fs';
+import {resolve} from 'node:path';
+import {pathToFileURL} from 'node:url';
+
+const require = createRequire(new URL('../../report/web/package.json', import.meta.url));
+const puppeteer = require('puppeteer-core');
+
+function usage(msg) {
+  if (msg) console.error('check_report: ' + msg);
+  console.error('usage: check_report.mjs REPORT.html --map MAPDIR [--scenarios DIR] ' +
+    '[--screenshot PNG] [--full-page] [--timing]');
+  process.exit(2);
+}
+
+function parseArgs(argv) {
+  const o = {report: null, map: null, scenarios: null, screenshot: null, fullPage: false, timing: false};
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    const next = () => { if (i + 1 >= argv.length) usage(a + ' needs a value'); return argv[++i]; };
+    if (a === '--map') o.map = next();
+    else if (a === '--scenarios') o.scenarios = next();
+    else if (a === '--screenshot') o.screenshot = next();
+    else if (a === '--full-page') o.fullPage = true;
+    else if (a === '--timing') o.timing = true;
+    else if (a === '-h' || a === '--help') usage();
+    else if (a.startsWith('--')) usage('unknown option ' + a);
+    else if (!o.report) o.report = a;
+    else usage('more than one report given');
+  }
+  if (!o.report) usage('no report given');
+  if (!o.map) usage('--map is required');
+  return o;
+}
+
+// Rail roads of an OpenDRIVE file: roads whose non-centre lanes are all rail or tram.
+// A plain text scan is enough for railodd's own output (one <lane .../> tag per lane).
+function xodrRailRoads(xml) {
+  const ids = [];
+  const roadRe = /<road\b([^>]*)>([\s\S]*?)<\/road>/g;
+  let m;
+  while ((m = roadRe.exec(xml))) {
+    const id = (/\bid="([^"]*)"/.exec(m[1]) || [])[1];
+    const body = m[2];
+    const lanesAt = body.indexOf('<lanes>');
+    if (lanesAt < 0) continue;
+    const lanes = body.slice(lanesAt, body.indexOf('</lanes>', lanesAt));
+    const types = [];
+    const laneRe = /<lane\b([^>]*)>/g;
+    let l;
+    while ((l = laneRe.exec(lanes))) {
+      const lid = (/\bid="([^"]*)"/.exec(l[1]) || [])[1];
+      if (lid === '0') continue;
+      types.push((/\btype="([^"]*)"/.exec(l[1]) || [])[1]);
+    }
+    if (types.length && types.every((t) => t === 'rail' || t === 'tram')) ids.push(id);
+  }
+  return ids;
+}
+
+function expectations(opts) {
+  const dir = resolve(opts.map);
+  const report = JSON.parse(readFileSync(dir + '/report.json', 'utf8'));
+  const profile = JSON.parse(readFileSync(dir + '/odd_profile.json', 'utf8'));
+  const xodrRail = xodrRailRoads(readFileSync(dir + '/map.xodr', 'utf8'));
+  const exp = {
+    railRoads: report.opendrive.rail_roads,
+    xodrRailRoads: xodrRail.length,
+    xodrRailIds: xodrRail,
+    length: profile.route.length_m,
+    levelCrossings: profile.elements.filter((e) => e.id === 'sc.xing.level').length,
+    scenarios: null,
+  };
+  if (opts.scenarios) {
+    const man = JSON.parse(readFileSync(resolve(opts.scenarios) + '/manifest.json', 'utf8'));
+    exp.scenarios = man.scenarios.length;
+  }
+  return exp;
+}
+
+// Everything the page shows, read from the live Leaflet and uPlot objects.
+function inspectPage() {
+  const R = window.railoddReport;
+  const L_ = R.layers;
+  const count = (g) => g ? g.getLayers().length : null;
+  return {
+    tracks: count(L_.tracks),
+    levelCrossings: count(L_.levelCrossings),
+    scenarios: count(L_.scenarios),
+    charts: R.charts.map((u) => ({title: u.root.querySelector('.u-title') ?
+      u.root.querySelector('.u-title').textContent : '', min: u.scales.x.min, max: u.scales.x.max})),
+  };
+}
+
+// Fires a click on one track feature through Leaflet's API at one of its vertices and
+// returns the popup text and the road the feature stands for.
+function clickTrack(index) {
+  const R = window.railoddReport;
+  const feats = R.layers.tracks.getLayers();
+  const f = feats[Math.min(index, feats.length - 1)];
+  const line = f.getLatLngs ? f : f.getLayers()[0];
+  const lls = line.getLatLngs();
+  const ll = lls[Math.floor(lls.length / 2)];
+  R.map.closePopup();
+  f.fire('click', {latlng: ll});
+  const pop = document.querySelector('.leaflet-popup-content');
+  return {text: pop ? pop.innerText : null, road: R.data.roads[f.railoddRoad].id};
+}
+
+async function run(opts) {
+  const exp = expectations(opts);
+  const problems = [];
+  const fail = (msg) => problems.push(msg);
+  const bytes = statSync(opts.report).size;
+  const browser = await puppeteer.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    args: ['--headless=new', '--no-sandbox', '--disable-gpu', '--allow-file-access-from-files'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({width: 1400, height: 1000});
+    page.on('console', (msg) => {
+      const t = msg.type();
+      if (t === 'error' || t === 'warn' || t === 'warning' || t === 'assert') {
+        fail('console ' + t + ': ' + msg.text());
+      }
+    });
+    page.on('pageerror', (err) => fail('page error: ' + (err && err.message || err)));
+    page.on('requestfailed', (req) => fail('request failed: ' + req.url()));
+    page.on('request', (req) => {
+      const u = req.url();
+      if (!u.startsWith('file:') && !u.startsWith('data:')) fail('external request: ' + u);
+    });
+    // Notes the moment the app marks the page ready, in ms since navigation start.
+    await page.evaluateOnNewDocument(() => {
+      new MutationObserver((_, obs) => {
+        if (document.body && document.body.dataset.ready === '1' && window.__readyAt == null) {
+          window.__readyAt = performance.now();
+          obs.disconnect();
+        }
+      }).observe(document, {attributes: true, subtree: true, attributeFilter: ['data-ready']});
+    });
+    await page.goto(pathToFileURL(resolve(opts.report)).href, {waitUntil: 'load', timeout: 60000});
+    await page.waitForFunction(() => document.body && document.body.dataset.ready === '1', {timeout: 60000});
+    const readyMs = await page.evaluate(() => window.__readyAt);
+    const got = await page.evaluate(inspectPage);
+    checkDrawn(exp, got, fail);
+    const click = await page.evaluate(clickTrack, 0);
+    checkClick(exp, click, fail);
+    if (opts.screenshot) await screenshot(page, opts);
+    await new Promise((r) => setTimeout(r, 200));  // late console messages
+    return {exp, got, problems, bytes, readyMs, click};
+  } finally {
+    await browser.close();
+  }
+}
+
+function checkDrawn(exp, got, fail) {
+  if (got.tracks !== exp.railRoads) fail(`track features ${got.tracks} != report.json rail_roads ${exp.railRoads}`);
+  if (exp.xodrRailRoads !== exp.railRoads) fail(`map.xodr has ${exp.xodrRailRoads} rail roads, report.json says ${exp.railRoads}`);
+  if (!got.charts.length) fail('no charts drawn');
+  for (const c of got.charts) {
+    if (Math.abs(c.max - exp.length) > 0.5 || Math.abs(c.min) > 0.5) {
+      fail(`chart "${c.title}" x range [${c.min}, ${c.max}] != [0, ${exp.length}]`);
+    }
+  }
+  if (got.levelCrossings !== exp.levelCrossings) {
+    fail(`level-crossing markers ${got.levelCrossings} != sc.xing.level elements ${exp.levelCrossings}`);
+  }
+  if (exp.scenarios != null && got.scenarios !== exp.scenarios) {
+    fail(`scenario anchor markers ${got.scenarios} != manifest scenarios ${exp.scenarios}`);
+  }
+}
+
+function checkClick(exp, click, fail) {
+  if (!click.text) { fail('clicking a track opened no popup'); return; }
+  if (!exp.xodrRailIds.includes(click.road)) fail(`clicked track's road ${click.road} is not a rail road of map.xodr`);
+  if (!new RegExp('\\broad\\s+(id\\s+)?' + click.road.replace(/[.*+?^${}()|[\]\\]/g, '\\$&') + '\\b').test(click.text)) {
+    fail(`track popup does not name road ${click.road}: ${click.text.slice(0, 120)}`);
+  }
+}
+
+async function screenshot(page, opts) {
+  if (opts.fullPage) { await page.screenshot({path: opts.screenshot, fullPage: true}); return; }
+  // The top of the page: header, map and the chainage charts.
+  const h = await page.evaluate(() => {
+    const c = document.getElementById('charts-section');
+    return c ? Math.ceil(c.getBoundingClientRect().bottom + window.scrollY + 8) : 1000;
+  });
+  await page.screenshot({path: opts.screenshot, clip: {x: 0, y: 0, width: 1400, height: Math.min(h, 2400)},
+    captureBeyondViewport: true});
+}
+
+const opts = parseArgs(process.argv.slice(2));
+run(opts).then((r) => {
+  if (opts.timing) console.log(JSON.stringify({bytes: r.bytes, ready_ms: Math.round(r.readyMs)}));
+  const summary = `tracks ${r.got.tracks}/${r.exp.railRoads} (xodr ${r.exp.xodrRailRoads}), ` +
+    `charts ${r.got.charts.length} x-max ${r.got.charts.map((c) => c.max.toFixed(1)).join('/')} vs ${r.exp.length.toFixed(1)} m, ` +
+    `level crossings ${r.got.levelCrossings}/${r.exp.levelCrossings}` +
+    (r.exp.scenarios != null ? `, scenario anchors ${r.got.scenarios}/${r.exp.scenarios}` : '') +
+    `, track click road ${r.click.road}, ready ${Math.round(r.readyMs)} ms`;
+  if (r.problems.length) {
+    for (const p of r.problems) console.error('FAIL: ' + p);
+    console.error('check_report: FAILED (' + r.problems.length + ' problems): ' + summary);
+    process.exit(1);
+  }
+  console.log('check_report: OK: ' + summary);
+}).catch((err) => {
+  console.error('check_report: FAILED: ' + (err && err.stack || err));
+  process.exit(1);
+});
