@@ -193,6 +193,7 @@ function checkClick(exp, click, fail) {
 }
 
 async function screenshot(page, opts) {
+  await page.evaluate(() => window.railoddReport.map.closePopup());
   if (opts.fullPage) { await page.screenshot({path: opts.screenshot, fullPage: true}); return; }
   // The top of the page: header, map and the chainage charts.
   const h = await page.evaluate(() => {

@@ -49,9 +49,16 @@
       cursor: {sync: {key: SYNC_KEY, setSeries: false}, drag: {x: true, y: false}},
       scales: {x: {time: false}},
       series: [{label: 'chain position', value: mValue}].concat(series),
-      axes: [{label: 'position along the chain (m)', labelSize: 20, size: 40}].concat(axes),
+      axes: [xAxis()].concat(axes),
       hooks: {setScale: [syncScale]},
     };
+  }
+
+  // Long chains read better in km; short ones keep metres.
+  let xInKm = false;
+  function xAxis() {
+    return {label: 'position along the chain (' + (xInKm ? 'km' : 'm') + ')', labelSize: 20, size: 40,
+      values: (u, splits) => splits.map((v) => xInKm ? RA.num(v / 1000, 1) : RA.num(v, 0))};
   }
 
   function fixed(d) { return (u, v) => v == null ? '–' : RA.num(v, d); }
@@ -128,6 +135,7 @@
     if (!chain) { box.appendChild(el('p', {text: 'No chain of tracks to chart.'})); return; }
     const C = RA.buildChain(D, chain);
     RA.currentChain = C;
+    xInKm = C.length > 20000;
     const makers = [curvatureChart, elevationChart, cantSpeedChart];
     for (const make of makers) {
       const div = el('div', {class: 'chart'});

@@ -24,6 +24,10 @@
     if (sel.ratio_to_pairwise != null) out.push(figure(RA.pct(sel.ratio_to_pairwise), 'of pairwise'));
     if (S.route) out.push(figure(RA.pct(S.route.ratio), 'route items covered (' + S.route.covered + ' / ' + S.route.items + ')'));
     if (S.spec) out.push(figure(RA.pct(S.spec.ratio), 'spec items covered (' + S.spec.covered + ' / ' + S.spec.items + ', ' + S.spec.hostable + ' hostable)'));
+    if (S.criticality && S.criticality.can_stop != null) {
+      const c = S.criticality;
+      out.push(figure(RA.num(c.can_stop, 0) + ' / ' + RA.num(c.can_stop + c.cannot_stop, 0), 'train can stop in sight'));
+    }
     if (S.play && S.play.summary) {
       const p = S.play.summary;
       out.push(figure(RA.num(p.passed, 0) + ' / ' + RA.num(p.scenarios, 0), 'played and passed'));
@@ -31,11 +35,22 @@
     return el('div', {class: 'figs'}, out);
   }
 
+  // Per template: rows, anchors, pairwise coverage and, when the set was assessed,
+  // how many scenarios leave the train room to stop (coverage.json criticality).
   function templatesTable(S) {
-    return el('table', {class: 'grid'}, [el('thead', null, tr(['template', 'scenarios', 'anchors',
-      'pairs covered / feasible', 'pairwise coverage'].map((h) => el('th', {text: h})))),
-    el('tbody', null, (S.templates || []).map((t) => tr([t.id, RA.num(t.rows, 0), RA.num(t.anchors, 0),
-      RA.num(t.pairs_covered, 0) + ' / ' + RA.num(t.pairs_feasible, 0), ratioBar(t.ratio)])))]);
+    const crit = (S.criticality && S.criticality.templates) || {};
+    const hasCrit = Object.keys(crit).length > 0;
+    const head = ['template', 'scenarios', 'anchors', 'pairs covered / feasible', 'pairwise coverage']
+      .concat(hasCrit ? ['can stop', 'cannot stop'] : []);
+    return el('table', {class: 'grid'}, [el('thead', null, tr(head.map((h) => el('th', {text: h})))),
+      el('tbody', null, (S.templates || []).map((t) => {
+        const id = t.template || t.id, c = crit[id] || {};
+        const pairs = RA.num(t.pairs_covered, 0) + ' / ' + RA.num(t.pairs_feasible, 0) +
+          (t.pairs_infeasible ? ' (' + RA.num(t.pairs_infeasible, 0) + ' infeasible)' : '');
+        return tr([id, RA.num(t.rows, 0), RA.num(t.anchors, 0) + (t.anchors_infeasible ?
+          ' (' + RA.num(t.anchors_infeasible, 0) + ' infeasible)' : ''), pairs, ratioBar(t.ratio)]
+          .concat(hasCrit ? [RA.num(c.can_stop, 0), RA.num(c.cannot_stop, 0)] : []));
+      }))]);
   }
 
   function matrixTable(S) {
