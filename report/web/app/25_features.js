@@ -66,10 +66,28 @@
       const g = pointLayer(D, def);
       layers[def.key] = g;
       if (g.getLayers().length) {
-        overlays.push({key: def.key, label: def.label, colour: def.colour, layer: g, on: !def.off,
+        // Thousands of signals or switches hide the tracks at network scale.
+        const crowded = g.getLayers().length > 1500 && def.r <= 4;
+        overlays.push({key: def.key, label: def.label, colour: def.colour, layer: g, on: !def.off && !crowded,
           count: g.getLayers().length, point: true});
       }
     }
+  }
+
+  // Where the route leaves the declared ODD: red stretches (or rings for points).
+  function violationLayer(D) {
+    const group = L.featureGroup();
+    for (const v of (D.spec && D.spec.violations) || []) {
+      const road = D.roads[v.road];
+      if (!road) continue;
+      const style = {renderer: RA.renderer, color: '#d00000', weight: 3, fillOpacity: 0};
+      const f = v.point || Math.abs(v.s1 - v.s0) < 1 ?
+        L.circleMarker(RA.positionAt(road, v.s0), Object.assign(style, {radius: 10})) :
+        L.polyline(RA.slice(road, v.s0, v.s1), Object.assign(style, {weight: 7, opacity: 0.6, dashArray: '8 6'}));
+      f.bindPopup(() => RA.violationPopup(v), {maxWidth: 420});
+      group.addLayer(f);
+    }
+    return group;
   }
 
   // Canvas draws in insertion order: after the tracks are redrawn, points go back on top.
@@ -78,8 +96,10 @@
       const g = layers[def.key];
       if (g && RA.map.hasLayer(g)) g.bringToFront();
     }
-    if (layers.scenarios && RA.map.hasLayer(layers.scenarios)) layers.scenarios.bringToFront();
+    for (const key of ['violations', 'scenarios']) {
+      if (layers[key] && RA.map.hasLayer(layers[key])) layers[key].bringToFront();
+    }
   }
 
-  Object.assign(RA, {drawFeatures, raisePoints, POINT_DEFS: POINTS, STRETCH_DEFS: STRETCHES});
+  Object.assign(RA, {drawFeatures, raisePoints, violationLayer, POINT_DEFS: POINTS, STRETCH_DEFS: STRETCHES});
 })(window.RailoddApp = window.RailoddApp || {});

@@ -53,6 +53,11 @@
     const firstPoint = overlays.findIndex((o) => o.point);
     overlays.splice(firstPoint < 0 ? overlays.length : firstPoint, 0, {key: 'tracks',
       label: 'Rail tracks', colour: RA.TRACK_COLOUR, layer: layers.tracks, on: true});
+    if (D.spec && D.spec.violations && D.spec.violations.length) {
+      layers.violations = RA.violationLayer(D);
+      overlays.push({key: 'violations', label: 'Outside the declared ODD', colour: '#d00000',
+        layer: layers.violations, on: true, count: layers.violations.getLayers().length, point: true});
+    }
     if (D.scenarios) {
       layers.scenarios = RA.anchorLayer(D, D.scenarios);
       overlays.push({key: 'scenarios', label: 'Scenario anchors', colour: '#8ecae6',
