@@ -12,7 +12,11 @@
     // A wide click tolerance: tracks are 3 px lines and the report is used with a mouse.
     RA.renderer = L.canvas({padding: 0.3, tolerance: 5});
     if (D.meta && D.meta.tiles) {
-      L.tileLayer(D.meta.tiles, {maxZoom: 19}).addTo(map);
+      // The only case where the page loads anything: the user asked for a basemap.
+      let host = D.meta.tiles;
+      try { host = new URL(D.meta.tiles.replace(/[{}]/g, '')).host; } catch (e) { /* keep the template */ }
+      L.control.attribution({prefix: false}).addTo(map);
+      L.tileLayer(D.meta.tiles, {maxZoom: 19, attribution: 'basemap: ' + RA.esc(host)}).addTo(map);
     }
     const b = D.bounds;
     if (b && isFinite(b[0])) map.fitBounds([[b[1], b[0]], [b[3], b[2]]], {padding: [10, 10]});
@@ -95,8 +99,7 @@
   function focus(roadIndex, s0, s1, html) {
     const D = RA.data, map = RA.map, road = D.roads[roadIndex];
     if (!road || !map) return;
-    const mapEl = document.getElementById('map');
-    if (mapEl && mapEl.scrollIntoView) mapEl.scrollIntoView({block: 'center'});
+    showMap();
     const pos = RA.positionAt(road, s1 == null ? s0 : (s0 + s1) / 2);
     if (s1 != null && Math.abs(s1 - s0) > 50) {
       const pts = RA.slice(road, s0, s1);
@@ -108,6 +111,15 @@
     }
     L.popup({maxWidth: 420}).setLatLng(pos).setContent(html || RA.trackPopup(road, s0))
       .openOn(map);
+  }
+
+  // Brings the map on screen for a link further down the page, unless it is mostly visible.
+  function showMap() {
+    const mapEl = document.getElementById('map');
+    if (!mapEl) return;
+    const r = mapEl.getBoundingClientRect(), vh = window.innerHeight;
+    const visible = Math.max(0, Math.min(r.bottom, vh) - Math.max(r.top, 0));
+    if (visible < 0.5 * Math.min(r.height, vh)) document.getElementById('map-section').scrollIntoView({block: 'start'});
   }
 
   let hl = null;
@@ -130,6 +142,6 @@
     focus(road, s, null, html);
   }
 
-  Object.assign(RA, {createMap, drawTracks, drawRoads, focus, highlight, markChainPlace,
+  Object.assign(RA, {createMap, drawTracks, drawRoads, focus, showMap, highlight, markChainPlace,
     elementsByRoad, TRACK_COLOUR});
 })(window.RailoddApp = window.RailoddApp || {});

@@ -83,7 +83,9 @@
     return el('div', {id: 'spec'}, [
       el('h3', null, ['Declared ODD: ', sp.name || '', ' ', verdict]),
       RA.kv([['source', sp.source], ['elements checked', RA.num(sp.elements_checked, 0)],
-        ['elements outside', RA.num(sp.elements_outside, 0)], ['violations', RA.num(v.length, 0)],
+        ['elements outside', RA.num(sp.elements_outside, 0)],
+        ['violations', RA.num(sp.violations_total != null ? sp.violations_total : v.length, 0) +
+          (sp.violations_total > v.length ? ' (' + RA.num(v.length, 0) + ' listed)' : '')],
         ['stretches', sp.stretches ? RA.num(sp.stretches.length, 0) : null]]),
       v.length ? RA.cappedTable(['element', 'attribute', 'value', 'constraint', 'road', 's (m)',
         'OSM', ''], v.length, (i) => violationRow(D, v[i]), {cls: 'violations'}) : null]);

@@ -84,6 +84,13 @@
         g[i].reason]), {cls: 'gaps'});
   }
 
+  // A scenario the player could not run is neither passed nor failed.
+  function playState(p) {
+    if (!p) return null;
+    if (p.ran === false) return 'not run';
+    return p.passed ? 'passed' : 'failed';
+  }
+
   function crit(sc) {
     const c = sc.play && sc.play.criticality;
     if (!c) return {};
@@ -98,7 +105,8 @@
     const rows = [['template', sc.template], ['anchor', sc.element], ['track', sc.track],
       ['chainage', RA.num(sc.chainage, 1) + ' m']];
     if (p) {
-      rows.push(['play', p.passed ? 'passed' : 'FAILED' + (p.failed_checks && p.failed_checks.length ?
+      const st = playState(p);
+      rows.push(['play', st !== 'failed' ? st : 'FAILED' + (p.failed_checks && p.failed_checks.length ?
         ': ' + p.failed_checks.join('; ') : '')], ['can stop', c.canStop == null ? '' : (c.canStop ? 'yes' : 'no')],
       ['stopping / sight', RA.num(c.stop, 0) + ' m / ' + RA.num(c.sight, 0) + ' m'],
       ['min distance', isFinite(c.minDist) ? RA.num(c.minDist, 1) + ' m' : ''],
@@ -114,7 +122,7 @@
     for (const sc of S.list || []) {
       const road = D.roads[sc.road];
       if (!road) continue;
-      const failed = sc.play && !sc.play.passed;
+      const failed = playState(sc.play) === 'failed';
       const m = L.circleMarker(RA.positionAt(road, sc.s), {renderer: RA.renderer, radius: 6,
         color: failed ? '#d00000' : '#003049', weight: 2, fillColor: failed ? '#ff8fa3' : '#8ecae6',
         fillOpacity: 0.7});
@@ -132,12 +140,11 @@
     const yes = (b) => b == null ? '–' : (b ? 'yes' : 'no');
     return RA.cappedTable(['scenario', 'template', 'play', 'can stop', 'stopping (m)', 'sight (m)',
       'min distance (m)', 'TTC at onset (s)'], list.length, (i) => {
-      const sc = list[i], c = crit(sc), p = sc.play;
-      const res = !p ? '–' : (p.passed ? 'passed' : 'failed');
+      const sc = list[i], c = crit(sc), st = playState(sc.play);
       return tr([RA.link(sc.id, () => showScenario(sc)), sc.template,
-        el('td', {class: p ? (p.passed ? 'pass' : 'fail') : '', text: res}), yes(c.canStop),
+        el('td', {class: st === 'passed' ? 'pass' : st === 'failed' ? 'fail' : '', text: st || '–'}), yes(c.canStop),
         RA.num(c.stop, 1), RA.num(c.sight, 1), isFinite(c.minDist) ? RA.num(c.minDist, 1) : '–',
-        isFinite(c.ttc) ? RA.num(c.ttc, 1) : '–'], {class: p && !p.passed ? 'flag' : ''});
+        isFinite(c.ttc) ? RA.num(c.ttc, 1) : '–'], {class: st === 'failed' ? 'flag' : ''});
     }, {step: 100});
   }
 

@@ -53,7 +53,7 @@
     if (!roads.length) return;
     const pts = [];
     for (const r of roads) for (const p of RA.latlngs(r)) pts.push(p);
-    document.getElementById('map').scrollIntoView({block: 'center'});
+    RA.showMap();
     RA.map.fitBounds(L.latLngBounds(pts), {padding: [40, 40], maxZoom: 17, animate: false});
     RA.highlight(pts.length < 20000 ? pts : null);
     L.popup({maxWidth: 420}).setLatLng(pts[Math.floor(pts.length / 2)]).setContent(
@@ -95,7 +95,9 @@
       el('div', null, [RA.kv([['mapped nodes', RA.num(fit.nodes, 0)],
         ['residual p50', RA.num(fit.residual_p50_m, 3) + ' m'],
         ['residual p95', RA.num(fit.residual_p95_m, 3) + ' m'],
-        ['residual max', RA.num(fit.residual_max_m, 3) + ' m']]),
+        ['residual max', RA.num(fit.residual_max_m, 3) + ' m'],
+        ['farther than ' + RA.num(fit.far_m, 0) + ' m', fit.nodes_far != null && fit.far_m != null ?
+          RA.num(fit.nodes_far, 0) + ' nodes (not in the histogram)' : null]].filter((p) => p[1] != null)),
       el('h4', {text: 'Estimated node noise'}), RA.kv(noise)]), hist]),
     el('h3', {text: 'Per track'}), tracksTable(fit)]);
     return histogram(fit, hist);
