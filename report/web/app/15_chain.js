@@ -145,10 +145,14 @@
     st.sort((p, q) => p[0] - q[0]);
     const xs = [], ys = [];
     let end = null;
-    for (const [x0, x1, v] of st) {
+    for (const [a, x1, v] of st) {
+      // Overlapping stretches (both directions of a line, say) would zigzag once the
+      // rows are sorted by x: each one starts where the previous one ended.
+      const x0 = end == null ? a : Math.max(a, end);
+      if (x0 >= x1) continue;
       if (end != null && x0 > end + 0.5) { xs.push((end + x0) / 2); ys.push(null); }
       xs.push(x0, x1); ys.push(v, v);
-      end = end == null ? x1 : Math.max(end, x1);
+      end = x1;
     }
     return [xs, ys];
   }

@@ -19,7 +19,22 @@
       x[i] = Math.max(0, Math.min(length, xv));
       if (si >= 0) cols[si][i] = yv;
     }
+    cols.forEach(widenGaps);
     return [x].concat(cols);
+  }
+
+  // uPlot clips a gap between the rows next to its null; those can be other series'
+  // rows, so every row between the two defined values around a null becomes null.
+  function widenGaps(col) {
+    let lastDefined = -1, inGap = false;
+    for (let i = 0; i < col.length; i++) {
+      if (col[i] === null) inGap = true;
+      else if (col[i] !== undefined) {
+        if (inGap) for (let j = lastDefined + 1; j < i; j++) col[j] = null;
+        inGap = false;
+        lastDefined = i;
+      }
+    }
   }
 
   let syncing = false;
