@@ -5,6 +5,7 @@
 #include "merge_command.hpp"
 #include "play_command.hpp"
 #include "profile_command.hpp"
+#include "report_command.hpp"
 #include "sample_command.hpp"
 #include "scenarios_command.hpp"
 #include "validate_command.hpp"
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
     commands.push_back(std::make_unique<cli::MergeCommand>());
     commands.push_back(std::make_unique<cli::PlayCommand>());
     commands.push_back(std::make_unique<cli::ProfileCommand>());
+    commands.push_back(std::make_unique<cli::ReportCommand>());
     commands.push_back(std::make_unique<cli::SampleCommand>());
     commands.push_back(std::make_unique<cli::ScenariosCommand>());
     commands.push_back(std::make_unique<cli::ValidateCommand>());

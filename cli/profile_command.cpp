@@ -1,5 +1,6 @@
 #include "profile_command.hpp"
 #include "option_checks.hpp"
+#include "taxonomy_choice.hpp"
 
 #include "railodd/odd/odd_spec.hpp"
 #include "railodd/odd/profile.hpp"
@@ -23,31 +24,6 @@ fs::path profile_file(const std::string& map_dir) {
     return fs::is_directory(p) ? p / "odd_profile.json" : p;
 }
 
-// The taxonomy the classes and the spec are read against: --taxonomy, else the
-// file the profile was tagged with (as written, then beside the profile), else
-// the shipped one. Without --taxonomy or a spec a missing file is no error: the
-// summary stored in the profile is shown as it is.
-std::optional<fs::path> taxonomy_file(const ProfileOptions& opt, const odd::OddProfile& profile,
-                                      const fs::path& profile_path) {
-    if (!opt.taxonomy.empty()) {
-        return fs::path{opt.taxonomy};
-    }
-    if (!profile.taxonomy_file.empty()) {
-        const fs::path named{profile.taxonomy_file};
-        if (fs::is_regular_file(named)) {
-            return named;
-        }
-        if (named.is_relative() && fs::is_regular_file(profile_path.parent_path() / named)) {
-            return profile_path.parent_path() / named;
-        }
-    }
-    const fs::path shipped = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
-    if (fs::is_regular_file(shipped) || !opt.odd_spec.empty()) {
-        return shipped; // with a spec, a missing taxonomy is reported by load_taxonomy
-    }
-    return std::nullopt;
-}
-
 } // namespace
 
 CLI::App* ProfileCommand::add(CLI::App& parent) {
@@ -69,7 +45,7 @@ int ProfileCommand::run() {
     const fs::path file = profile_file(opt_.map_dir);
     const odd::OddProfile profile = odd::read_profile(file);
     std::optional<odd::Taxonomy> taxonomy;
-    if (const auto tax_file = taxonomy_file(opt_, profile, file)) {
+    if (const auto tax_file = taxonomy_file(opt_.taxonomy, !opt_.odd_spec.empty(), profile, file)) {
         taxonomy = odd::load_taxonomy(*tax_file);
         if (!profile.taxonomy_version.empty() && profile.taxonomy_version != taxonomy->version) {
             std::cerr << "railodd: warning: " << file.string() << " was tagged with taxonomy version "

@@ -3,6 +3,7 @@
 // need, with the values as written (no repairs). Internal to xodr_check.
 #include "railodd/xodr_check/check.hpp"
 #include "railodd/xodr_check/geometry_eval.hpp"
+#include "railodd/xodr_check/map_lines.hpp"
 
 #include <cmath>
 #include <limits>
@@ -39,14 +40,6 @@ struct Link {
     std::string contact; // "start", "end" or empty
 };
 
-struct Elevation {
-    double s = 0, a = 0, b = 0, c = 0, d = 0;
-    double at(double s_road) const {
-        const double t = s_road - s;
-        return a + t * (b + t * (c + t * d));
-    }
-};
-
 // A signal, object or reference placed at s on its road.
 struct RoadPoint {
     std::string kind; // "signal", "object", "tunnel", ...
@@ -79,6 +72,8 @@ struct Road {
     std::vector<RoadPoint> points;
     std::vector<Switch> switches;
     bool rail = false; // every non-centre lane is "rail" or "tram"
+    std::string name;
+    std::string osm_ids; // <userData code="osm">
     // Poses at both ends, filled once the plan view was read.
     bool has_geometry = false;
     Pose start;
@@ -133,6 +128,7 @@ struct Document {
     std::string file;
     int rev_major = 1;
     int rev_minor = 0;
+    std::string geo_reference;
     std::vector<Road> roads;
     std::vector<Junction> junctions;
     std::vector<Station> stations;

@@ -193,6 +193,12 @@ Road read_road(Reader& r, const pugi::xml_node& n) {
     road.id = n.attribute("id").value();
     r.at("road", road.id);
     road.junction = n.attribute("junction").as_string("-1");
+    road.name = n.attribute("name").value();
+    for (const auto u : n.children("userData")) {
+        if (std::strcmp(u.attribute("code").value(), "osm") == 0) {
+            road.osm_ids = u.attribute("value").value();
+        }
+    }
     road.length = r.num(n, "length", 0.0);
     road.predecessor = read_link(n.child("link").child("predecessor"));
     road.successor = read_link(n.child("link").child("successor"));
@@ -286,6 +292,7 @@ Document read_document(const std::string& xml, const std::string& name) {
     }
     doc.rev_major = static_cast<int>(r.num(header, "revMajor", 1.0, bool(header)));
     doc.rev_minor = static_cast<int>(r.num(header, "revMinor", 0.0, bool(header)));
+    doc.geo_reference = header.child("geoReference").child_value();
     for (const auto n : root.children("road")) {
         doc.roads.push_back(read_road(r, n));
     }

@@ -1,0 +1,98 @@
+#pragma once
+// The report's data builders, one per section of the page (internal).
+#include "railodd/odd/profile.hpp"
+#include "railodd/xodr_check/map_lines.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace railodd::report::detail {
+
+using ojson = nlohmann::ordered_json;
+// With JSON_DIAGNOSTICS, ordered_json's push_back re-parents every element of
+// the array (O(n) per call): large arrays are built as array_t and moved into
+// a value once.
+using Array = ojson::array_t;
+
+// Lengths in the page: 1 cm is finer than anything drawn.
+inline double cm(double v) { return std::round(v * 100.0) / 100.0; }
+
+struct LonLat {
+    double lon = 0.0;
+    double lat = 0.0;
+};
+
+// The map's local frame (its geoReference) to WGS84 and back, with PROJ.
+class GeoFrame {
+public:
+    GeoFrame(const std::string& proj_string, const std::string& file);
+    ~GeoFrame();
+    GeoFrame(const GeoFrame&) = delete;
+    GeoFrame& operator=(const GeoFrame&) = delete;
+    LonLat to_lonlat(double x, double y) const;
+    void to_local(LonLat p, double& x, double& y) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// A point on a road's reference line nearest to a query.
+struct RoadHit {
+    std::size_t road = 0;
+    double s = 0.0;
+    double distance = 0.0;
+    double hdg = 0.0;
+    bool found = false;
+};
+
+// The map's roads sampled for the page, and a grid over the rail roads'
+// samples for nearest-point queries (mapped nodes to the fitted line).
+class RoadData {
+public:
+    RoadData(const xodr_check::MapLines& map, const GeoFrame& frame);
+    ojson roads_json() const;
+    ojson bounds_json() const;
+    // The nearest rail road point within max_m of (x, y), refined on the
+    // road's closed-form line.
+    RoadHit nearest_rail(double x, double y, double max_m) const;
+    // Road index by OpenDRIVE id; -1 when absent.
+    long index_of(const std::string& id) const;
+
+private:
+    struct Sampled {
+        std::vector<double> x, y;
+    };
+    const xodr_check::MapLines& map_;
+    const GeoFrame& frame_;
+    std::vector<Sampled> samples_;
+    std::map<std::string, long> index_;
+    double cell_ = 50.0;
+    std::map<std::pair<long, long>, std::vector<std::pair<std::size_t, std::size_t>>> grid_; // cell -> (road, vertex)
+};
+
+// Profile elements, kinds, OSM id lists and each track's road pieces.
+ojson profile_sections(const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out);
+
+// The chart's chains: "all tracks end to end" and long chains joined at
+// track ends; longest first after the first.
+ojson chains_json(const odd::OddProfile& profile, const ojson& tracks);
+
+// Mapped nodes against the fitted line: residuals, their histogram, node
+// curvature; the per-track fit figures of report.json. `fit` gets the section,
+// `node_curvature` the triples.
+void node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
+              const GeoFrame& frame, ojson& fit, Array& node_curvature);
+
+// Coverage, manifest and play results of a scenario set.
+ojson scenario_section(const std::filesystem::path& dir, const std::filesystem::path& play_file,
+                       const RoadData& roads);
+
+} // namespace railodd::report::detail

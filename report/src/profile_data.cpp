@@ -1,0 +1,136 @@
+// The profile's elements in table form: one row per element with its kind,
+// road and attribute values by position, OSM id lists interned. On a
+// national network (170k elements) this is the page's largest part, so no
+// key is repeated per row.
+#include "parts.hpp"
+
+#include <algorithm>
+#include <map>
+#include <variant>
+
+namespace railodd::report::detail {
+
+namespace {
+
+struct Kind {
+    std::string id;
+    std::string path;
+    bool point = true;
+    std::vector<std::string> attrs;
+    std::size_t index = 0;
+};
+
+double dm(double v) { return std::round(v * 10.0) / 10.0; }
+
+ojson value_json(const odd::AttributeValue& v) {
+    if (const auto* d = std::get_if<double>(&v)) {
+        return std::round(*d * 1e4) / 1e4;
+    }
+    if (const auto* s = std::get_if<std::string>(&v)) {
+        return *s;
+    }
+    return std::get<bool>(v);
+}
+
+// Kinds in order of first appearance, each with the union of its attribute
+// names (in order of first appearance).
+std::vector<Kind> collect_kinds(const odd::OddProfile& profile, std::map<std::string, std::size_t>& by_id) {
+    std::vector<Kind> kinds;
+    for (const auto& e : profile.elements) {
+        auto [it, fresh] = by_id.emplace(e.element_id, kinds.size());
+        if (fresh) {
+            kinds.push_back({e.element_id, e.element, true, {}, kinds.size()});
+        }
+        Kind& k = kinds[it->second];
+        k.point = k.point && e.point;
+        for (const auto& a : e.attributes) {
+            if (std::find(k.attrs.begin(), k.attrs.end(), a.name) == k.attrs.end()) {
+                k.attrs.push_back(a.name);
+            }
+        }
+    }
+    return kinds;
+}
+
+// A track's pieces: per road, the s and chainage ranges its stretch elements
+// span, in chainage order.
+struct Piece {
+    long road = -1;
+    double s0 = 1e300, s1 = -1e300, ch0 = 1e300, ch1 = -1e300;
+    bool reversed = false;
+};
+
+ojson tracks_json(const odd::OddProfile& profile, const RoadData& roads) {
+    std::vector<std::map<std::string, Piece>> pieces(profile.tracks);
+    std::vector<double> length(profile.tracks, 0.0);
+    for (const auto& e : profile.elements) {
+        if (e.track >= profile.tracks) {
+            continue;
+        }
+        length[e.track] = std::max(length[e.track], e.chainage_end);
+        if (e.point) {
+            continue;
+        }
+        Piece& p = pieces[e.track][e.road_id];
+        p.road = roads.index_of(e.road_id);
+        p.s0 = std::min(p.s0, std::min(e.s_start, e.s_end));
+        p.s1 = std::max(p.s1, std::max(e.s_start, e.s_end));
+        p.ch0 = std::min(p.ch0, e.chainage_start);
+        p.ch1 = std::max(p.ch1, e.chainage_end);
+        p.reversed = p.reversed || e.reversed;
+    }
+    Array tracks;
+    for (std::size_t t = 0; t < profile.tracks; ++t) {
+        std::vector<Piece> list;
+        for (auto& [id, p] : pieces[t]) {
+            if (p.road >= 0) {
+                list.push_back(p);
+            }
+        }
+        std::sort(list.begin(), list.end(), [](const Piece& a, const Piece& b) { return a.ch0 < b.ch0; });
+        ojson rows = ojson::array();
+        for (const auto& p : list) {
+            rows.push_back({p.road, cm(p.s0), cm(p.s1), cm(p.ch0), cm(p.ch1), p.reversed ? 1 : 0});
+        }
+        tracks.push_back({{"length", cm(length[t])}, {"pieces", std::move(rows)}});
+    }
+    return ojson(std::move(tracks));
+}
+
+} // namespace
+
+ojson profile_sections(const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out) {
+    std::map<std::string, std::size_t> kind_of;
+    const std::vector<Kind> kinds = collect_kinds(profile, kind_of);
+    std::map<std::string, std::size_t> osm_of;
+    Array osm, rows;
+    rows.reserve(profile.elements.size());
+    for (const auto& e : profile.elements) {
+        const Kind& k = kinds[kind_of.at(e.element_id)];
+        ojson values = ojson::array();
+        for (const auto& name : k.attrs) {
+            const auto* v = e.find(name);
+            values.push_back(v ? value_json(*v) : ojson(nullptr));
+        }
+        std::string ids;
+        for (const auto& id : e.osm_ids) {
+            ids += (ids.empty() ? "" : ",") + id;
+        }
+        const auto [it, fresh] = osm_of.emplace(ids, osm.size());
+        if (fresh) {
+            osm.push_back(ids);
+        }
+        // 0.1 m: an element's place is read, not computed with (the table's
+        // largest part on a national network).
+        rows.push_back({k.index, roads.index_of(e.road_id), dm(e.s_start), dm(e.s_end), e.track,
+                        dm(e.chainage_start), dm(e.chainage_end), std::move(values), it->second, e.reversed ? 1 : 0});
+    }
+    ojson kinds_json = ojson::array();
+    for (const auto& k : kinds) {
+        kinds_json.push_back({{"id", k.id}, {"path", k.path}, {"point", k.point}, {"attrs", k.attrs}});
+    }
+    tracks_out = tracks_json(profile, roads);
+    return {{"kinds", std::move(kinds_json)}, {"osm", ojson(std::move(osm))}, {"elements", ojson(std::move(rows))}};
+}
+
+} // namespace railodd::report::detail

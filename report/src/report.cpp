@@ -1,0 +1,160 @@
+// The report's data document, section by section in the order of the page
+// (report/web/data_format.md).
+#include "railodd/report/report.hpp"
+
+#include "parts.hpp"
+
+#include "railodd/odd/odd_spec.hpp"
+#include "railodd/odd/spec_check.hpp"
+#include "railodd/odd/taxonomy.hpp"
+#include "railodd/util/errors.hpp"
+
+#include <fstream>
+
+namespace railodd::report {
+
+using detail::cm;
+using detail::ojson;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Violations beyond this are counted, not listed: a spec far from a national
+// network's reality would list every element.
+constexpr std::size_t max_violations = 5000;
+
+ojson optional_json(const fs::path& file) {
+    if (!fs::is_regular_file(file)) {
+        return ojson::object();
+    }
+    std::ifstream in(file, std::ios::binary);
+    try {
+        return ojson::parse(in);
+    } catch (const std::exception& e) {
+        throw InputError(file.string(), std::string{"not valid JSON: "} + e.what());
+    }
+}
+
+// As `railodd profile` chooses it: the option, else the file the profile was
+// tagged with (as written, then beside it), else the shipped one.
+fs::path taxonomy_of(const ReportOptions& o, const odd::OddProfile& profile) {
+    if (!o.taxonomy.empty()) {
+        return o.taxonomy;
+    }
+    const fs::path named{profile.taxonomy_file};
+    if (!named.empty() && fs::is_regular_file(named)) {
+        return named;
+    }
+    if (!named.empty() && named.is_relative() && fs::is_regular_file(o.map_dir / named)) {
+        return o.map_dir / named;
+    }
+    return o.fallback_taxonomy;
+}
+
+ojson spec_json(const ReportOptions& o, const odd::OddProfile& profile, const detail::RoadData& roads) {
+    if (o.odd_spec.empty()) {
+        return nullptr;
+    }
+    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_of(o, profile));
+    const odd::SpecVerdict v = odd::check_spec(profile, odd::load_odd_spec(o.odd_spec, taxonomy), taxonomy);
+    detail::Array violations;
+    for (std::size_t i = 0; i < v.violations.size() && i < max_violations; ++i) {
+        const auto& x = v.violations[i];
+        std::string osm;
+        for (const auto& id : x.osm_ids) {
+            osm += (osm.empty() ? "" : ",") + id;
+        }
+        violations.push_back({{"element", x.element}, {"spec_element", x.spec_element}, {"attribute", x.attribute},
+                              {"value", x.value}, {"unit", x.unit}, {"constraint", x.constraint}, {"note", x.note},
+                              {"road", roads.index_of(x.road_id)}, {"s0", cm(x.s_start)}, {"s1", cm(x.s_end)},
+                              {"track", x.track}, {"ch0", cm(x.chainage_start)}, {"ch1", cm(x.chainage_end)},
+                              {"point", x.point}, {"osm", osm}});
+    }
+    ojson stretches = ojson::array();
+    for (const auto& s : v.stretches) {
+        stretches.push_back({{"track", s.track}, {"ch0", cm(s.chainage_start)}, {"ch1", cm(s.chainage_end)},
+                             {"elements", s.elements}, {"violations", s.violations}});
+    }
+    return {{"name", v.spec_name}, {"source", v.spec_source}, {"passed", v.passed},
+            {"elements_checked", v.elements_checked}, {"elements_outside", v.elements_outside},
+            {"violations_total", v.violations.size()}, {"violations", ojson(std::move(violations))},
+            {"stretches", std::move(stretches)}};
+}
+
+// report.json's counts: what was dropped or repaired and what the map holds.
+ojson input_json(const ojson& report) {
+    ojson opendrive = ojson::object();
+    const ojson written = report.value("opendrive", ojson::object());
+    for (const auto& [k, v] : written.items()) {
+        if (v.is_number()) {
+            opendrive[k] = v;
+        } else if (v.is_array()) {
+            opendrive[k] = v.size();
+        }
+    }
+    return {{"dropped", report.value("dropped", ojson::array()).size()},
+            {"repairs", report.value("repairs", ojson::array()).size()},
+            {"input", report.value("input", ojson::object())},
+            {"opendrive", std::move(opendrive)}};
+}
+
+ojson meta_json(const ReportOptions& o, const odd::OddProfile& profile, const fs::path& play_file) {
+    const std::string map_name = o.map_name.empty() ? o.map_dir.string() : o.map_name;
+    return {{"title", o.title.empty() ? "railodd report: " + profile.route : o.title},
+            {"route", profile.route},
+            {"length_m", cm(profile.length_m)},
+            {"tracks", profile.tracks},
+            {"along_route", profile.along_route},
+            {"railodd", "0.1.0"},
+            {"map_dir", map_name},
+            {"scenario_dir", o.scenario_dir.empty() ? ojson(nullptr) : ojson(o.scenario_dir.string())},
+            {"play_file", play_file.empty() ? ojson(nullptr) : ojson(play_file.string())},
+            {"tiles", o.tiles.empty() ? ojson(nullptr) : ojson(o.tiles)}};
+}
+
+fs::path play_file_of(const ReportOptions& o) {
+    if (!o.play_file.empty()) {
+        return fs::is_directory(o.play_file) ? o.play_file / "play.json" : o.play_file;
+    }
+    if (!o.scenario_dir.empty() && fs::is_regular_file(o.scenario_dir / "play.json")) {
+        return o.scenario_dir / "play.json";
+    }
+    return {};
+}
+
+} // namespace
+
+ojson report_data(const ReportOptions& o) {
+    const xodr_check::MapLines map = xodr_check::read_map_lines(o.map_dir / "map.xodr");
+    const odd::OddProfile profile = odd::read_profile(o.map_dir / "odd_profile.json");
+    const ojson report = optional_json(o.map_dir / "report.json");
+    const detail::GeoFrame frame(map.geo_reference, map.file);
+    const detail::RoadData roads(map, frame);
+    const fs::path play_file = play_file_of(o);
+
+    ojson data;
+    data["format"] = "railodd_report_data";
+    data["format_version"] = 1;
+    data["meta"] = meta_json(o, profile, play_file);
+    data["bounds"] = roads.bounds_json();
+    data["roads"] = roads.roads_json();
+    ojson tracks;
+    ojson sections = detail::profile_sections(profile, roads, tracks);
+    for (auto& [k, v] : sections.items()) {
+        data[k] = std::move(v);
+    }
+    data["summary"] = profile.summary;
+    data["chains"] = detail::chains_json(profile, tracks);
+    data["tracks"] = std::move(tracks);
+    ojson fit;
+    detail::Array node_curvature;
+    detail::node_fit(o.map_dir, report, roads, frame, fit, node_curvature);
+    data["node_curvature"] = ojson(std::move(node_curvature));
+    data["spec"] = spec_json(o, profile, roads);
+    data["fit"] = std::move(fit);
+    data["input"] = input_json(report);
+    data["scenarios"] = o.scenario_dir.empty() ? ojson(nullptr) : detail::scenario_section(o.scenario_dir, play_file, roads);
+    return data;
+}
+
+} // namespace railodd::report
