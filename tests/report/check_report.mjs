@@ -169,9 +169,11 @@ async function run(opts) {
     checkDrawn(exp, got, fail);
     const click = await page.evaluate(clickTrack, 0);
     checkClick(exp, click, fail);
+    const used = await exercise(page);
+    if (!used.chartPopup) fail('a click on the curvature chart showed no place on the map');
     if (opts.screenshot) await screenshot(page, opts);
     await new Promise((r) => setTimeout(r, 200));  // late console messages
-    return {exp, got, problems, bytes, readyMs, click};
+    return {exp, got, problems, bytes, readyMs, click, used};
   } finally {
     await browser.close();
   }
@@ -214,6 +216,43 @@ function checkClick(exp, click, fail) {
   }
 }
 
+// Uses the page the way a reader would (every colouring, every layer toggle, a click on
+// a chart and on the band, the first link of each table) so that errors in those paths
+// show up as console errors. Returns what it did; the popup checks are the caller's.
+async function exercise(page) {
+  return page.evaluate(async () => {
+    const tick = () => new Promise((r) => setTimeout(r, 0));
+    const done = {modes: 0, toggles: 0, links: 0, chartPopup: false};
+    const sel = document.getElementById('colour-by');
+    if (sel) {
+      for (const o of Array.from(sel.options).concat([sel.options[sel.selectedIndex]])) {
+        sel.value = o.value; sel.dispatchEvent(new Event('change')); done.modes++; await tick();
+      }
+    }
+    for (const box of document.querySelectorAll('.mappanel input[type=checkbox]')) {
+      for (let k = 0; k < 2; k++) { box.click(); done.toggles++; await tick(); }
+    }
+    const R = window.railoddReport;
+    R.map.closePopup();
+    const u = R.charts[0];
+    if (u) {
+      const r = u.over.getBoundingClientRect();
+      const at = {clientX: r.left + r.width / 2, clientY: r.top + r.height / 2, bubbles: true};
+      u.over.dispatchEvent(new MouseEvent('mousedown', at));
+      u.over.dispatchEvent(new MouseEvent('click', at));
+      done.chartPopup = !!document.querySelector('.leaflet-popup-content');
+    }
+    for (const sec of ['odd-section', 'scenarios-section', 'fit-section']) {
+      const a = document.querySelector('#' + sec + ' a.maplink');
+      if (a) { a.click(); done.links++; await tick(); }
+    }
+    const more = document.querySelector('button.more');
+    if (more && more.style.display !== 'none') more.click();
+    R.map.closePopup();
+    return done;
+  });
+}
+
 async function screenshot(page, opts) {
   await page.evaluate(() => window.railoddReport.map.closePopup());
   if (opts.fullPage) { await page.screenshot({path: opts.screenshot, fullPage: true}); return; }
@@ -233,7 +272,8 @@ run(opts).then((r) => {
     `charts ${r.got.charts.length} x-max ${r.got.charts.map((c) => c.max.toFixed(1)).join('/')} vs ${r.exp.chainLength.toFixed(1)} m (${r.exp.chainBasis}), ` +
     `level crossings ${r.got.levelCrossings}/${r.exp.levelCrossings}` +
     (r.exp.scenarios != null ? `, scenario anchors ${r.got.scenarios}/${r.exp.scenarios}` : '') +
-    `, track click road ${r.click.road}, ready ${Math.round(r.readyMs)} ms`;
+    `, track click road ${r.click.road}, exercised ${r.used.modes} colourings, ${r.used.toggles} layer toggles, ` +
+    `${r.used.links} table links and a chart click, ready ${Math.round(r.readyMs)} ms`;
   if (r.problems.length) {
     for (const p of r.problems) console.error('FAIL: ' + p);
     console.error('check_report: FAILED (' + r.problems.length + ' problems): ' + summary);
