@@ -12,6 +12,8 @@
         if (o.onToggle) o.onToggle(box.checked);
       }});
     if (o.on) map.addLayer(o.layer);
+    // Layers shown from elsewhere (a test, a table link) keep the box truthful.
+    map.on('layeradd layerremove', (e) => { if (e.layer === o.layer) box.checked = map.hasLayer(o.layer); });
     return el('label', {class: 'ov'}, [box, o.colour ? RA.swatch(o.colour) : null, o.label,
       o.count != null ? el('span', {class: 'lgkm', text: RA.num(o.count, 0)}) : null]);
   }
