@@ -169,9 +169,9 @@ async function run(opts) {
     checkDrawn(exp, got, fail);
     const click = await page.evaluate(clickTrack, 0);
     checkClick(exp, click, fail);
+    if (opts.screenshot) await screenshot(page, opts);  // before exercise() moves the map
     const used = await exercise(page);
     if (!used.chartPopup) fail('a click on the curvature chart showed no place on the map');
-    if (opts.screenshot) await screenshot(page, opts);
     await new Promise((r) => setTimeout(r, 200));  // late console messages
     return {exp, got, problems, bytes, readyMs, click, used};
   } finally {
@@ -238,9 +238,12 @@ async function exercise(page) {
     if (u) {
       const r = u.over.getBoundingClientRect();
       const at = {clientX: r.left + r.width / 2, clientY: r.top + r.height / 2, bubbles: true};
-      u.over.dispatchEvent(new MouseEvent('mousedown', at));
-      u.over.dispatchEvent(new MouseEvent('click', at));
-      done.chartPopup = !!document.querySelector('.leaflet-popup-content');
+      // uPlot swallows a click whose mousedown was not where the cursor last moved.
+      for (const type of ['mousemove', 'mousedown', 'mouseup', 'click']) {
+        u.over.dispatchEvent(new MouseEvent(type, at));
+      }
+      const pop = document.querySelector('.leaflet-popup-content');
+      done.chartPopup = !!pop && /Rail track/.test(pop.textContent);
     }
     for (const sec of ['odd-section', 'scenarios-section', 'fit-section']) {
       const a = document.querySelector('#' + sec + ' a.maplink');
