@@ -18,6 +18,7 @@
 #include "railodd/odd/route.hpp"
 #include "railodd/odd/tagger.hpp"
 #include "railodd/odd/taxonomy.hpp"
+#include "railodd/report/report.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -81,6 +82,7 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--from", opt_.from, "Profile the route from this station (with --to; shortest path)");
     app->add_option("--to", opt_.to, "Profile the route to this station (with --from)");
     app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
+    app->add_flag("--no-report", opt_.no_report, "Do not write report.html (the route's HTML page, `railodd report`)");
     return app;
 }
 
@@ -291,6 +293,17 @@ nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const G
     return report;
 }
 
+// report.html from the staged map and the profile and report in memory: the
+// page is staged and committed with the files it shows.
+void write_page(OutputStage& stage, const std::string& outdir, const odd::OddProfile& profile,
+                const nlohmann::ordered_json& report) {
+    report::ReportOptions o;
+    o.map_dir = stage.staged_path("map.xodr").parent_path();
+    o.map_name = outdir;
+    o.fallback_taxonomy = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
+    stage.write_text("report.html", report::render_html(report::report_data(o, {&profile, &report})));
+}
+
 } // namespace
 
 int ConvertCommand::run() {
@@ -364,6 +377,13 @@ int ConvertCommand::run() {
     nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input);
     if (route) {
         report["route"] = odd::route_report(*route);
+    }
+    if (!opt_.no_report) {
+        PhaseTimer page_timer;
+        page_timer.start("report_html");
+        write_page(stage, opt_.outdir, profile, report);
+        page_timer.stop();
+        result.timings.insert(result.timings.end(), page_timer.seconds().begin(), page_timer.seconds().end());
     }
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);

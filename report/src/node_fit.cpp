@@ -34,7 +34,10 @@ std::vector<Way> track_ways(const std::filesystem::path& file, const GeoFrame& f
         throw InputError(file.string(), std::string{"not valid GeoJSON: "} + e.what());
     }
     std::vector<Way> ways;
-    for (const auto& f : j.value("features", ojson::array())) {
+    if (!j.contains("features") || !j["features"].is_array()) {
+        throw InputError(file.string(), "not a GeoJSON FeatureCollection (no \"features\" array)");
+    }
+    for (const auto& f : j["features"]) {
         const auto& props = f.value("properties", ojson::object());
         const auto& g = f.value("geometry", ojson::object());
         if (props.value("layer", "") != "track" || g.value("type", "") != "LineString") {

@@ -125,9 +125,15 @@ fs::path play_file_of(const ReportOptions& o) {
 } // namespace
 
 ojson report_data(const ReportOptions& o) {
-    const xodr_check::MapLines map = xodr_check::read_map_lines(o.map_dir / "map.xodr");
     const odd::OddProfile profile = odd::read_profile(o.map_dir / "odd_profile.json");
     const ojson report = optional_json(o.map_dir / "report.json");
+    return report_data(o, {&profile, &report});
+}
+
+ojson report_data(const ReportOptions& o, const Loaded& loaded) {
+    const xodr_check::MapLines map = xodr_check::read_map_lines(o.map_dir / "map.xodr");
+    const odd::OddProfile& profile = *loaded.profile;
+    const ojson& report = *loaded.report;
     const detail::GeoFrame frame(map.geo_reference, map.file);
     const detail::RoadData roads(map, frame);
     const fs::path play_file = play_file_of(o);

@@ -99,8 +99,8 @@ ojson play_of(const ojson& result) {
 
 ojson scenario_list(const ojson& manifest, const ojson* play, const RoadData& roads) {
     std::map<std::string, const ojson*> results;
-    if (play) {
-        for (const auto& r : play->value("scenarios", ojson::array())) {
+    if (play && play->contains("scenarios")) {
+        for (const auto& r : play->at("scenarios")) { // by reference: the map keeps pointers
             results[r.value("id", "")] = &r;
         }
     }

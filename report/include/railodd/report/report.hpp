@@ -14,6 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+namespace railodd::odd {
+struct OddProfile;
+}
+
 namespace railodd::report {
 
 struct ReportOptions {
@@ -32,6 +36,14 @@ struct ReportOptions {
 // missing or unreadable (map.xodr, odd_profile.json are required; report.json,
 // ingest.geojson, scenario files are used when present or named).
 nlohmann::ordered_json report_data(const ReportOptions& options);
+
+// What a caller already holds (convert, before its outputs are in place):
+// used instead of reading odd_profile.json and report.json.
+struct Loaded {
+    const odd::OddProfile* profile = nullptr;
+    const nlohmann::ordered_json* report = nullptr;
+};
+nlohmann::ordered_json report_data(const ReportOptions& options, const Loaded& loaded);
 
 // The page around a data document.
 std::string render_html(const nlohmann::ordered_json& data);
