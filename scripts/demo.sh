@@ -17,8 +17,11 @@ if [ -x ../shared/tools/esmini/bin/esmini ] || command -v esmini >/dev/null || [
 else
   echo "no esmini: scenarios not played (railodd play --player PATH)"
 fi
+# The route on one page, with the scenarios, their play results and the spec check.
+./build/railodd report out/sample_route --scenarios out/scenarios --odd-spec data/odd/example_odd_spec.yaml
 echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
+echo "  the route on one page (open in a browser): $(pwd)/out/sample_route/report.html"
 echo "  conversion (map.xodr, odd_profile.json/.geojson/.csv, report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
 echo "  scenarios (ID.xosc, ID.behavior.yaml, catalogs/, distributions/, manifest.json, coverage.json/.txt; play.json/.txt, play/ when played): $(pwd)/out/scenarios/"

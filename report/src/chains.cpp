@@ -121,6 +121,11 @@ ojson chain_json(const std::string& label, const std::vector<Part>& parts, const
     return {{"label", label}, {"length", cm(total)}, {"parts", std::move(list)}};
 }
 
+ojson with_length(ojson chain, double length) {
+    chain["length"] = cm(length);
+    return chain;
+}
+
 std::string km(double m) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.2f km", m / 1000.0);
@@ -140,10 +145,13 @@ ojson chains_json(const odd::OddProfile& profile, const ojson& tracks) {
         all.push_back({t, false});
     }
     if (profile.along_route || length.size() <= end_to_end_max_tracks || profile.track_ends.empty()) {
-        const double total = std::accumulate(length.begin(), length.end(), 0.0);
-        chains.push_back(chain_json(profile.along_route ? "the route, " + km(total)
-                                                        : "all tracks end to end, " + km(total),
-                                    all, length));
+        // Along a route the tracks follow each other on the route's chainage,
+        // gaps (missing relation members) included.
+        const double total = profile.along_route ? profile.length_m : std::accumulate(length.begin(), length.end(), 0.0);
+        chains.push_back(with_length(chain_json(profile.along_route ? "the route, " + km(total)
+                                                                    : "all tracks end to end, " + km(total),
+                                                all, length),
+                                     total));
     }
     if (profile.along_route || profile.track_ends.empty()) {
         return chains;

@@ -62,12 +62,15 @@ struct Piece {
 
 ojson tracks_json(const odd::OddProfile& profile, const RoadData& roads) {
     std::vector<std::map<std::string, Piece>> pieces(profile.tracks);
-    std::vector<double> length(profile.tracks, 0.0);
+    // Along a route chainage is the route's, not each track's own: a track
+    // starts where the one before it ends.
+    std::vector<double> start(profile.tracks, profile.along_route ? 1e300 : 0.0), end(profile.tracks, 0.0);
     for (const auto& e : profile.elements) {
         if (e.track >= profile.tracks) {
             continue;
         }
-        length[e.track] = std::max(length[e.track], e.chainage_end);
+        start[e.track] = std::min(start[e.track], e.chainage_start);
+        end[e.track] = std::max(end[e.track], e.chainage_end);
         if (e.point) {
             continue;
         }
@@ -92,7 +95,8 @@ ojson tracks_json(const odd::OddProfile& profile, const RoadData& roads) {
         for (const auto& p : list) {
             rows.push_back({p.road, cm(p.s0), cm(p.s1), cm(p.ch0), cm(p.ch1), p.reversed ? 1 : 0});
         }
-        tracks.push_back({{"length", cm(length[t])}, {"pieces", std::move(rows)}});
+        const double from = start[t] > end[t] ? end[t] : start[t];
+        tracks.push_back({{"start", cm(from)}, {"length", cm(end[t] - from)}, {"pieces", std::move(rows)}});
     }
     return ojson(std::move(tracks));
 }

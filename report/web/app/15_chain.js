@@ -8,13 +8,17 @@
   function buildChain(D, chain) {
     const trackInfo = new Map();
     const segs = [];
+    // Along a route (meta.along_route) chainage is already the route's: each
+    // track sits at its own start. Elsewhere tracks are laid end to end.
+    const along = !!(D.meta && D.meta.along_route);
     let off = 0;
     for (const [t, rev] of chain.parts) {
       const tr = D.tracks[t];
       if (!tr) continue;
-      const len = tr.length;
-      trackInfo.set(t, {off, rev: !!rev, len});
-      const X = (ch) => off + (rev ? len - ch : ch);
+      const len = tr.length, start = tr.start || 0;
+      const base = along ? start : off;
+      trackInfo.set(t, {off: base, rev: !!rev, len, start});
+      const X = (ch) => base + (rev ? len - (ch - start) : ch - start);
       for (const [road, s0, s1, ch0, ch1, prev] of tr.pieces) {
         let xa = X(ch0), xb = X(ch1);
         let sa = prev ? s1 : s0, sb = prev ? s0 : s1;
@@ -34,7 +38,7 @@
     C.x = (track, ch) => {
       const ti = trackInfo.get(track);
       if (!ti) return null;
-      return ti.off + (ti.rev ? ti.len - ch : ch);
+      return ti.off + (ti.rev ? ti.len - (ch - ti.start) : ch - ti.start);
     };
     // +1 when chainage grows with x on this chain, -1 when the track runs backwards.
     C.dir = (track) => { const ti = trackInfo.get(track); return ti && ti.rev ? -1 : 1; };
