@@ -293,15 +293,25 @@ nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const G
     return report;
 }
 
-// report.html from the staged map and the profile and report in memory: the
+// report.html from the map, profile, report and mapped tracks in memory: the
 // page is staged and committed with the files it shows.
 void write_page(OutputStage& stage, const std::string& outdir, const odd::OddProfile& profile,
-                const nlohmann::ordered_json& report) {
+                const nlohmann::ordered_json& report, const xodr::Map& map, const ingest::IngestResult& result) {
+    std::vector<std::vector<std::array<double, 2>>> track_nodes;
+    for (const auto& way : result.tracks) {
+        for (const auto& part : way.parts) {
+            auto& line = track_nodes.emplace_back();
+            for (const auto& n : part) {
+                line.push_back({n.xy.x, n.xy.y});
+            }
+        }
+    }
     report::ReportOptions o;
     o.map_dir = stage.staged_path("map.xodr").parent_path();
     o.map_name = outdir;
     o.fallback_taxonomy = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
-    stage.write_text("report.html", report::render_html(report::report_data(o, {&profile, &report})));
+    const report::PageData page = report::page_data(o, {&profile, &report, &map, &track_nodes});
+    stage.write_with("report.html", [&](std::ostream& out) { report::write_html(page, out); });
 }
 
 } // namespace
@@ -381,7 +391,7 @@ int ConvertCommand::run() {
     if (!opt_.no_report) {
         PhaseTimer page_timer;
         page_timer.start("report_html");
-        write_page(stage, opt_.outdir, profile, report);
+        write_page(stage, opt_.outdir, profile, report, map.map, result);
         page_timer.stop();
         result.timings.insert(result.timings.end(), page_timer.seconds().begin(), page_timer.seconds().end());
     }

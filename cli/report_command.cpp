@@ -60,13 +60,13 @@ int ReportCommand::run() {
     o.fallback_taxonomy = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
     o.tiles = opt_.tiles;
     o.title = opt_.title;
-    const std::string page = report::render_html(report::report_data(o));
+    const report::PageData page = report::page_data(o);
     // Staged like every output: a failed run leaves no half-written page.
     const fs::path out = fs::absolute(opt_.output);
     OutputStage stage(out.parent_path());
-    stage.write_text(out.filename().string(), page);
+    stage.write_with(out.filename().string(), [&](std::ostream& os) { report::write_html(page, os); });
     for (const auto& p : stage.commit()) {
-        std::cout << "railodd report: wrote " << p.string() << " (" << page.size() / 1024 << " KiB)\n";
+        std::cout << "railodd report: wrote " << p.string() << " (" << fs::file_size(p) / 1024 << " KiB)\n";
     }
     return exit_ok;
 }

@@ -256,6 +256,36 @@ TEST_F(ReportData, PageInlinesEverythingAndEscapesTheData) {
     EXPECT_EQ(ojson::parse(page.substr(a, b - a)), d);
 }
 
+// The page convert writes from what it holds in memory (the map model, the
+// ingested ways) says what `railodd report` reads back from the files.
+TEST_F(ReportData, ConvertsPageFromMemoryAgreesWithTheFiles) {
+    const std::string page = read_file(map_dir() / "report.html");
+    const std::string open = R"(<script type="application/json" id="railodd-data">)";
+    const auto a = page.find(open) + open.size();
+    const ojson mem = ojson::parse(page.substr(a, page.find("</script>", a) - a));
+    railodd::report::ReportOptions o;
+    o.map_dir = map_dir();
+    const ojson files = railodd::report::report_data(o);
+    ASSERT_EQ(mem["roads"].size(), files["roads"].size());
+    for (std::size_t i = 0; i < files["roads"].size(); ++i) {
+        const auto& m = mem["roads"][i];
+        const auto& f = files["roads"][i];
+        EXPECT_EQ(m["id"], f["id"]);
+        EXPECT_EQ(m["rail"], f["rail"]);
+        EXPECT_EQ(m["osm"], f["osm"]);
+        ASSERT_EQ(m["pts"].size(), f["pts"].size()) << f["id"];
+        const auto mp = undelta(m["pts"], 2), fp = undelta(f["pts"], 2);
+        for (std::size_t j = 0; j < mp.size(); ++j) {
+            EXPECT_LE(std::abs(mp[j] - fp[j]), 1) << "road " << f["id"] << " value " << j; // 1e-6 degree
+        }
+        EXPECT_EQ(m["k"].size(), f["k"].size()) << f["id"];
+    }
+    EXPECT_EQ(mem["elements"], files["elements"]);
+    EXPECT_EQ(mem["fit"]["nodes"], files["fit"]["nodes"]);
+    EXPECT_EQ(mem["fit"]["histogram"], files["fit"]["histogram"]);
+    EXPECT_EQ(mem["node_curvature"].size(), files["node_curvature"].size());
+}
+
 TEST_F(ReportData, CommandWritesTheSamePageTwiceAndRefusesBadInput) {
     const fs::path out = root() / "pages";
     const std::string args = "report " + quoted(map_dir()) + " --scenarios " + quoted(scen_dir()) + " -o ";

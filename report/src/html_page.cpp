@@ -4,6 +4,8 @@
 #include "railodd/report/report.hpp"
 
 #include <map>
+#include <ostream>
+#include <sstream>
 #include <string_view>
 
 namespace railodd::report {
@@ -37,56 +39,60 @@ std::string html_escaped(const std::string& s) {
 // JSON inside <script>: a '<' only ever occurs inside a JSON string, where
 // \u003c is the same character, so "</script>" in an OSM name cannot end the
 // element.
-std::string script_json(const nlohmann::ordered_json& data) {
-    const std::string text = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    std::string out;
-    out.reserve(text.size());
-    for (char c : text) {
-        if (c == '<') {
-            out += "\\u003c";
-        } else {
-            out += c;
-        }
+void write_script_json(const std::string& json, std::ostream& out) {
+    std::size_t from = 0;
+    for (std::size_t at = json.find('<'); at != std::string::npos; at = json.find('<', from)) {
+        out.write(json.data() + from, static_cast<std::streamsize>(at - from));
+        out << "\\u003c";
+        from = at + 1;
     }
-    return out;
+    out.write(json.data() + from, static_cast<std::streamsize>(json.size() - from));
 }
 
 } // namespace
 
-std::string render_html(const nlohmann::ordered_json& data) {
-    const auto meta = data.value("meta", nlohmann::ordered_json::object());
-    const std::map<std::string_view, std::string> values{
-        {"TITLE", html_escaped(meta.value("title", std::string{"railodd report"}))},
-        {"VERSION", html_escaped(meta.value("railodd", std::string{}))},
-        {"DATA", script_json(data)},
-        {"LEAFLET_CSS", std::string{assets::leaflet_css}},
-        {"UPLOT_CSS", std::string{assets::uplot_css}},
-        {"APP_CSS", std::string{assets::app_css}},
-        {"LEAFLET_JS", std::string{assets::leaflet_js}},
-        {"UPLOT_JS", std::string{assets::uplot_js}},
-        {"APP_JS", std::string{assets::app_js}},
+void write_html(const PageData& data, std::ostream& out) {
+    const std::map<std::string_view, std::string_view> assets_by_name{
+        {"LEAFLET_CSS", assets::leaflet_css}, {"UPLOT_CSS", assets::uplot_css}, {"APP_CSS", assets::app_css},
+        {"LEAFLET_JS", assets::leaflet_js},   {"UPLOT_JS", assets::uplot_js},   {"APP_JS", assets::app_js},
     };
+    const std::string title = html_escaped(data.title);
     const std::string_view t = assets::template_html;
-    std::string page;
     std::size_t pos = 0;
     while (pos < t.size()) {
         const std::size_t at = t.find('@', pos);
         const std::size_t end = at == std::string_view::npos ? at : t.find('@', at + 1);
         if (end == std::string_view::npos) {
-            page.append(t.substr(pos));
+            out << t.substr(pos);
             break;
         }
-        const auto it = values.find(t.substr(at + 1, end - at - 1));
-        if (it == values.end()) {
-            page.append(t.substr(pos, end - pos)); // a lone '@': keep it, look again from the next one
+        const std::string_view name = t.substr(at + 1, end - at - 1);
+        const auto it = assets_by_name.find(name);
+        if (it == assets_by_name.end() && name != "DATA" && name != "TITLE" && name != "VERSION") {
+            out << t.substr(pos, end - pos); // a lone '@': keep it, look again from the next one
             pos = end;
             continue;
         }
-        page.append(t.substr(pos, at - pos));
-        page.append(it->second);
+        out << t.substr(pos, at - pos);
+        if (name == "DATA") {
+            write_script_json(data.json, out);
+        } else if (name == "TITLE") {
+            out << title;
+        } else if (name == "VERSION") {
+            out << "0.1.0";
+        } else {
+            out << it->second;
+        }
         pos = end + 1;
     }
-    return page;
+}
+
+std::string render_html(const nlohmann::ordered_json& data) {
+    PageData page{data.value("meta", nlohmann::ordered_json::object()).value("title", std::string{"railodd report"}),
+                  data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+    std::ostringstream out;
+    write_html(page, out);
+    return out.str();
 }
 
 } // namespace railodd::report

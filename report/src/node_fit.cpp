@@ -25,6 +25,18 @@ struct Way {
     std::vector<double> x, y;
 };
 
+void add_line(const ojson& coords, const GeoFrame& frame, std::vector<Way>& ways) {
+    Way w;
+    for (const auto& c : coords) {
+        double x = 0, y = 0;
+        frame.to_local({c.at(0).get<double>(), c.at(1).get<double>()}, x, y);
+        w.x.push_back(x);
+        w.y.push_back(y);
+    }
+    ways.push_back(std::move(w));
+}
+
+// The track ways of ingest.geojson (a clipped way is a MultiLineString).
 std::vector<Way> track_ways(const std::filesystem::path& file, const GeoFrame& frame) {
     std::ifstream in(file, std::ios::binary);
     ojson j;
@@ -33,24 +45,34 @@ std::vector<Way> track_ways(const std::filesystem::path& file, const GeoFrame& f
     } catch (const std::exception& e) {
         throw InputError(file.string(), std::string{"not valid GeoJSON: "} + e.what());
     }
-    std::vector<Way> ways;
     if (!j.contains("features") || !j["features"].is_array()) {
         throw InputError(file.string(), "not a GeoJSON FeatureCollection (no \"features\" array)");
     }
+    std::vector<Way> ways;
     for (const auto& f : j["features"]) {
-        const auto& props = f.value("properties", ojson::object());
-        const auto& g = f.value("geometry", ojson::object());
-        if (props.value("layer", "") != "track" || g.value("type", "") != "LineString") {
+        if (f.value("properties", ojson::object()).value("layer", "") != "track" || !f.contains("geometry")) {
             continue;
         }
-        Way w;
-        for (const auto& c : g.at("coordinates")) {
-            double x = 0, y = 0;
-            frame.to_local({c.at(0).get<double>(), c.at(1).get<double>()}, x, y);
-            w.x.push_back(x);
-            w.y.push_back(y);
+        const auto& g = f["geometry"];
+        const std::string type = g.value("type", "");
+        if (type == "LineString") {
+            add_line(g.at("coordinates"), frame, ways);
+        } else if (type == "MultiLineString") {
+            for (const auto& part : g.at("coordinates")) {
+                add_line(part, frame, ways);
+            }
         }
-        ways.push_back(std::move(w));
+    }
+    return ways;
+}
+
+std::vector<Way> given_ways(const std::vector<std::vector<std::array<double, 2>>>& lines) {
+    std::vector<Way> ways(lines.size());
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        for (const auto& p : lines[i]) {
+            ways[i].x.push_back(p[0]);
+            ways[i].y.push_back(p[1]);
+        }
     }
     return ways;
 }
@@ -64,7 +86,7 @@ double menger(double ax, double ay, double bx, double by, double cx, double cy) 
 
 // Node curvature along one way, placed on the nearest rail road and signed
 // along the road's growing s.
-void way_curvature(const Way& w, const RoadData& roads, Array& out) {
+void way_curvature(const Way& w, const RoadData& roads, std::vector<double>& out) {
     std::vector<double> along(w.x.size(), 0.0);
     for (std::size_t i = 1; i < w.x.size(); ++i) {
         along[i] = along[i - 1] + std::hypot(w.x[i] - w.x[i - 1], w.y[i] - w.y[i - 1]);
@@ -85,7 +107,7 @@ void way_curvature(const Way& w, const RoadData& roads, Array& out) {
         if (dx * std::cos(hit.hdg) + dy * std::sin(hit.hdg) < 0) {
             k = -k; // the way runs against the road
         }
-        out.push_back(hit.road);
+        out.push_back(static_cast<double>(hit.road));
         out.push_back(cm(hit.s));
         out.push_back(std::round(k * 1e7) / 1e7);
     }
@@ -101,11 +123,13 @@ double quantile(std::vector<double> v, double q) {
 }
 
 // Residuals of every distinct node; the overlay's points and the histogram.
-void residuals(const std::vector<Way>& ways, const RoadData& roads, const GeoFrame& frame, ojson& fit) {
+void residuals(const std::vector<Way>& ways, const RoadData& roads, const GeoFrame& frame, NodeFit& nf) {
+    ojson& fit = nf.fit;
+    auto& pts = nf.node_pts;
+    auto& node_res = nf.node_res;
     std::set<std::pair<long long, long long>> seen;
     std::vector<double> res;
     std::vector<std::size_t> counts(max_bins, 0);
-    Array pts, node_res;
     long long plon = 0, plat = 0;
     std::size_t far = 0;
     for (const auto& w : ways) {
@@ -136,8 +160,6 @@ void residuals(const std::vector<Way>& ways, const RoadData& roads, const GeoFra
     fit["residual_p95_m"] = cm(quantile(res, 0.95));
     fit["residual_max_m"] = cm(res.empty() ? 0.0 : *std::max_element(res.begin(), res.end()));
     fit["histogram"] = {{"bin_m", bin_m}, {"counts", counts}};
-    fit["node_pts"] = ojson(std::move(pts));
-    fit["node_res"] = ojson(std::move(node_res));
 }
 
 // report.json's per-track figures, flagged where the residuals are more than
@@ -164,21 +186,23 @@ void track_figures(const ojson& report_json, ojson& fit) {
 
 } // namespace
 
-void node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
-              const GeoFrame& frame, ojson& fit, Array& node_curvature) {
-    fit = {{"available", false}};
-    track_figures(report_json, fit);
+NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
+                 const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes) {
+    NodeFit nf;
+    nf.fit = {{"available", false}};
+    track_figures(report_json, nf.fit);
     const auto file = map_dir / "ingest.geojson";
-    if (!std::filesystem::is_regular_file(file)) {
-        fit["reason"] = "ingest.geojson is not in " + map_dir.string() + ": the mapped nodes are not known";
-        return;
+    if (!track_nodes && !std::filesystem::is_regular_file(file)) {
+        nf.fit["reason"] = "ingest.geojson is not in " + map_dir.string() + ": the mapped nodes are not known";
+        return nf;
     }
-    const std::vector<Way> ways = track_ways(file, frame);
-    fit["available"] = true;
-    residuals(ways, roads, frame, fit);
+    const std::vector<Way> ways = track_nodes ? given_ways(*track_nodes) : track_ways(file, frame);
+    nf.fit["available"] = true;
+    residuals(ways, roads, frame, nf);
     for (const auto& w : ways) {
-        way_curvature(w, roads, node_curvature);
+        way_curvature(w, roads, nf.curvature);
     }
+    return nf;
 }
 
 } // namespace railodd::report::detail

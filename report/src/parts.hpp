@@ -1,8 +1,11 @@
 #pragma once
 // The report's data builders, one per section of the page (internal).
+#include "json_text.hpp"
+
 #include "railodd/odd/profile.hpp"
 #include "railodd/xodr_check/map_lines.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -12,6 +15,10 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+namespace railodd::xodr {
+struct Map;
+}
 
 namespace railodd::report::detail {
 
@@ -58,7 +65,7 @@ struct RoadHit {
 class RoadData {
 public:
     RoadData(const xodr_check::MapLines& map, const GeoFrame& frame);
-    ojson roads_json() const;
+    void write_roads(JsonText& out) const;
     ojson bounds_json() const;
     // The nearest rail road point within max_m of (x, y), refined on the
     // road's closed-form line.
@@ -78,18 +85,27 @@ private:
     std::map<std::pair<long, long>, std::vector<std::pair<std::size_t, std::size_t>>> grid_; // cell -> (road, vertex)
 };
 
-// Profile elements, kinds, OSM id lists and each track's road pieces.
-ojson profile_sections(const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out);
+// The map convert holds, as the lines read_map_lines() gives from its file.
+xodr_check::MapLines map_lines_of(const xodr::Map& map, const std::string& name);
+
+// Profile elements, kinds and OSM id lists (keys "kinds", "osm", "elements"
+// of the open document); each track's road pieces into tracks_out.
+void write_profile(JsonText& out, const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out);
 
 // The chart's chains: "all tracks end to end" and long chains joined at
 // track ends; longest first after the first.
 ojson chains_json(const odd::OddProfile& profile, const ojson& tracks);
 
 // Mapped nodes against the fitted line: residuals, their histogram, node
-// curvature; the per-track fit figures of report.json. `fit` gets the section,
-// `node_curvature` the triples.
-void node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
-              const GeoFrame& frame, ojson& fit, Array& node_curvature);
+// curvature; the per-track fit figures of report.json.
+struct NodeFit {
+    ojson fit;                      // the "fit" section but its node arrays
+    std::vector<long long> node_pts; // delta-encoded 1e-6 degree
+    std::vector<long long> node_res; // cm
+    std::vector<double> curvature;   // road, s, k triples
+};
+NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
+                 const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes);
 
 // Coverage, manifest and play results of a scenario set.
 ojson scenario_section(const std::filesystem::path& dir, const std::filesystem::path& play_file,

@@ -22,14 +22,24 @@ struct Kind {
 
 double dm(double v) { return std::round(v * 10.0) / 10.0; }
 
-ojson value_json(const odd::AttributeValue& v) {
-    if (const auto* d = std::get_if<double>(&v)) {
-        return std::round(*d * 1e4) / 1e4;
+void write_value(JsonText& out, const odd::AttributeValue* v) {
+    if (!v) {
+        out.value(nullptr);
+    } else if (const auto* d = std::get_if<double>(v)) {
+        out.number(std::round(*d * 1e4) / 1e4);
+    } else if (const auto* s = std::get_if<std::string>(v)) {
+        out.string(*s);
+    } else {
+        out.boolean(std::get<bool>(*v));
     }
-    if (const auto* s = std::get_if<std::string>(&v)) {
-        return *s;
+}
+
+std::string joined(const std::vector<std::string>& ids) {
+    std::string out;
+    for (const auto& id : ids) {
+        out += (out.empty() ? "" : ",") + id;
     }
-    return std::get<bool>(v);
+    return out;
 }
 
 // Kinds in order of first appearance, each with the union of its attribute
@@ -103,38 +113,38 @@ ojson tracks_json(const odd::OddProfile& profile, const RoadData& roads) {
 
 } // namespace
 
-ojson profile_sections(const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out) {
+void write_profile(JsonText& out, const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out) {
     std::map<std::string, std::size_t> kind_of;
     const std::vector<Kind> kinds = collect_kinds(profile, kind_of);
+    out.key("kinds").open('[');
+    for (const auto& k : kinds) {
+        out.value({{"id", k.id}, {"path", k.path}, {"point", k.point}, {"attrs", k.attrs}});
+    }
+    out.close(']');
     std::map<std::string, std::size_t> osm_of;
-    Array osm, rows;
-    rows.reserve(profile.elements.size());
+    out.key("osm").open('[');
+    for (const auto& e : profile.elements) {
+        const std::string ids = joined(e.osm_ids);
+        if (osm_of.emplace(ids, osm_of.size()).second) {
+            out.string(ids);
+        }
+    }
+    out.close(']').key("elements").open('[');
     for (const auto& e : profile.elements) {
         const Kind& k = kinds[kind_of.at(e.element_id)];
-        ojson values = ojson::array();
-        for (const auto& name : k.attrs) {
-            const auto* v = e.find(name);
-            values.push_back(v ? value_json(*v) : ojson(nullptr));
-        }
-        std::string ids;
-        for (const auto& id : e.osm_ids) {
-            ids += (ids.empty() ? "" : ",") + id;
-        }
-        const auto [it, fresh] = osm_of.emplace(ids, osm.size());
-        if (fresh) {
-            osm.push_back(ids);
-        }
         // 0.1 m: an element's place is read, not computed with (the table's
         // largest part on a national network).
-        rows.push_back({k.index, roads.index_of(e.road_id), dm(e.s_start), dm(e.s_end), e.track,
-                        dm(e.chainage_start), dm(e.chainage_end), std::move(values), it->second, e.reversed ? 1 : 0});
+        out.open('[').integer(static_cast<long long>(k.index)).integer(roads.index_of(e.road_id));
+        out.number(dm(e.s_start)).number(dm(e.s_end)).integer(static_cast<long long>(e.track));
+        out.number(dm(e.chainage_start)).number(dm(e.chainage_end)).open('[');
+        for (const auto& name : k.attrs) {
+            write_value(out, e.find(name));
+        }
+        out.close(']').integer(static_cast<long long>(osm_of.at(joined(e.osm_ids)))).integer(e.reversed ? 1 : 0);
+        out.close(']');
     }
-    ojson kinds_json = ojson::array();
-    for (const auto& k : kinds) {
-        kinds_json.push_back({{"id", k.id}, {"path", k.path}, {"point", k.point}, {"attrs", k.attrs}});
-    }
+    out.close(']');
     tracks_out = tracks_json(profile, roads);
-    return {{"kinds", std::move(kinds_json)}, {"osm", ojson(std::move(osm))}, {"elements", ojson(std::move(rows))}};
 }
 
 } // namespace railodd::report::detail

@@ -124,43 +124,46 @@ fs::path play_file_of(const ReportOptions& o) {
 
 } // namespace
 
-ojson report_data(const ReportOptions& o) {
+PageData page_data(const ReportOptions& o) {
     const odd::OddProfile profile = odd::read_profile(o.map_dir / "odd_profile.json");
     const ojson report = optional_json(o.map_dir / "report.json");
-    return report_data(o, {&profile, &report});
+    return page_data(o, {&profile, &report});
 }
 
-ojson report_data(const ReportOptions& o, const Loaded& loaded) {
-    const xodr_check::MapLines map = xodr_check::read_map_lines(o.map_dir / "map.xodr");
+ojson report_data(const ReportOptions& o) { return ojson::parse(page_data(o).json); }
+
+PageData page_data(const ReportOptions& o, const Loaded& loaded) {
+    const xodr_check::MapLines map = loaded.map ? detail::map_lines_of(*loaded.map, (o.map_dir / "map.xodr").string())
+                                                : xodr_check::read_map_lines(o.map_dir / "map.xodr");
     const odd::OddProfile& profile = *loaded.profile;
     const ojson& report = *loaded.report;
     const detail::GeoFrame frame(map.geo_reference, map.file);
     const detail::RoadData roads(map, frame);
     const fs::path play_file = play_file_of(o);
+    const ojson meta = meta_json(o, profile, play_file);
 
-    ojson data;
-    data["format"] = "railodd_report_data";
-    data["format_version"] = 1;
-    data["meta"] = meta_json(o, profile, play_file);
-    data["bounds"] = roads.bounds_json();
-    data["roads"] = roads.roads_json();
+    PageData page{meta.at("title").get<std::string>(), {}};
+    detail::JsonText out(page.json);
+    out.open('{').key("format").string("railodd_report_data").key("format_version").integer(1);
+    out.key("meta").value(meta).key("bounds").value(roads.bounds_json());
+    out.key("roads");
+    roads.write_roads(out);
     ojson tracks;
-    ojson sections = detail::profile_sections(profile, roads, tracks);
-    for (auto& [k, v] : sections.items()) {
-        data[k] = std::move(v);
+    detail::write_profile(out, profile, roads, tracks);
+    out.key("summary").value(profile.summary).key("chains").value(detail::chains_json(profile, tracks));
+    out.key("tracks").value(tracks);
+    const detail::NodeFit nf = detail::node_fit(o.map_dir, report, roads, frame, loaded.track_nodes);
+    out.key("node_curvature").numbers(nf.curvature).key("spec").value(spec_json(o, profile, roads));
+    // "fit": its figures, then the node arrays.
+    out.key("fit").open('{');
+    for (const auto& [k, v] : nf.fit.items()) {
+        out.key(k).value(v);
     }
-    data["summary"] = profile.summary;
-    data["chains"] = detail::chains_json(profile, tracks);
-    data["tracks"] = std::move(tracks);
-    ojson fit;
-    detail::Array node_curvature;
-    detail::node_fit(o.map_dir, report, roads, frame, fit, node_curvature);
-    data["node_curvature"] = ojson(std::move(node_curvature));
-    data["spec"] = spec_json(o, profile, roads);
-    data["fit"] = std::move(fit);
-    data["input"] = input_json(report);
-    data["scenarios"] = o.scenario_dir.empty() ? ojson(nullptr) : detail::scenario_section(o.scenario_dir, play_file, roads);
-    return data;
+    out.key("node_pts").integers(nf.node_pts).key("node_res").integers(nf.node_res).close('}');
+    out.key("input").value(input_json(report)).key("scenarios");
+    out.value(o.scenario_dir.empty() ? ojson(nullptr) : detail::scenario_section(o.scenario_dir, play_file, roads));
+    out.close('}');
+    return page;
 }
 
 } // namespace railodd::report

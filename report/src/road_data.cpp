@@ -24,8 +24,8 @@ long long micro(double deg) { return std::llround(deg * 1e6); }
 
 // Curvature at the joints of the records: pairs (s, k), linear between. A
 // poly3 / paramPoly3 record's curvature is not linear: sampled at eighths.
-ojson curvature_pairs(const xodr_check::MapRoad& road) {
-    Array k;
+std::vector<double> curvature_pairs(const xodr_check::MapRoad& road) {
+    std::vector<double> k;
     double last_s = -1.0, last_k = std::numeric_limits<double>::quiet_NaN();
     const auto add = [&](double s, double kv) {
         kv = std::round(kv * 1e7) / 1e7;
@@ -47,7 +47,7 @@ ojson curvature_pairs(const xodr_check::MapRoad& road) {
             add(g.s + ds, xodr_check::evaluate(g, ds).curvature);
         }
     }
-    return ojson(std::move(k));
+    return k;
 }
 
 } // namespace
@@ -75,13 +75,14 @@ long RoadData::index_of(const std::string& id) const {
     return it == index_.end() ? -1 : it->second;
 }
 
-ojson RoadData::roads_json() const {
-    Array roads;
-    roads.reserve(map_.roads.size());
+void RoadData::write_roads(JsonText& out) const {
+    out.open('[');
+    std::vector<long long> pts, z;
     for (std::size_t i = 0; i < map_.roads.size(); ++i) {
         const auto& road = map_.roads[i];
         const auto& smp = samples_[i];
-        Array pts, z;
+        pts.clear();
+        z.clear();
         long long plon = 0, plat = 0, pz = 0;
         for (std::size_t j = 0; j < smp.x.size(); ++j) {
             const LonLat ll = frame_.to_lonlat(smp.x[j], smp.y[j]);
@@ -97,13 +98,17 @@ ojson RoadData::roads_json() const {
                 pz = zc;
             }
         }
-        roads.push_back({{"id", road.id},         {"rail", road.rail},    {"junction", road.junction},
-                         {"length", cm(road.length)}, {"name", road.name}, {"osm", road.osm_ids},
-                         {"pts", ojson(std::move(pts))},
-                         {"z", road.elevations.empty() ? ojson(nullptr) : ojson(std::move(z))},
-                         {"k", curvature_pairs(road)}});
+        out.open('{').key("id").string(road.id).key("rail").boolean(road.rail).key("junction").string(road.junction);
+        out.key("length").number(cm(road.length)).key("name").string(road.name).key("osm").string(road.osm_ids);
+        out.key("pts").integers(pts).key("z");
+        if (road.elevations.empty()) {
+            out.value(nullptr);
+        } else {
+            out.integers(z);
+        }
+        out.key("k").numbers(curvature_pairs(road)).close('}');
     }
-    return ojson(std::move(roads));
+    out.close(']');
 }
 
 ojson RoadData::bounds_json() const {

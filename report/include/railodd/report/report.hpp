@@ -9,13 +9,19 @@
 // (report/web/app/) inlined from the binary, and the data document
 // (report/web/data_format.md) in a <script type="application/json">: it opens
 // from disk with no network.
+#include <array>
 #include <filesystem>
+#include <iosfwd>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace railodd::odd {
 struct OddProfile;
+}
+namespace railodd::xodr {
+struct Map;
 }
 
 namespace railodd::report {
@@ -32,20 +38,34 @@ struct ReportOptions {
     std::string map_name;               // how the map folder is named in the page; empty: map_dir
 };
 
-// The data document. Throws railodd::InputError naming the file that is
-// missing or unreadable (map.xodr, odd_profile.json are required; report.json,
-// ingest.geojson, scenario files are used when present or named).
-nlohmann::ordered_json report_data(const ReportOptions& options);
-
 // What a caller already holds (convert, before its outputs are in place):
-// used instead of reading odd_profile.json and report.json.
+// used instead of reading odd_profile.json, report.json and map.xodr.
 struct Loaded {
     const odd::OddProfile* profile = nullptr;
     const nlohmann::ordered_json* report = nullptr;
+    const xodr::Map* map = nullptr; // null: map.xodr is read
+    // The mapped track ways in the map's frame, one node list (x, y) per way
+    // part; null: ingest.geojson is read.
+    const std::vector<std::vector<std::array<double, 2>>>* track_nodes = nullptr;
 };
-nlohmann::ordered_json report_data(const ReportOptions& options, const Loaded& loaded);
 
-// The page around a data document.
+// The data document as JSON text, and the page's title.
+struct PageData {
+    std::string title;
+    std::string json;
+};
+
+// Throws railodd::InputError naming the file that is missing or unreadable
+// (map.xodr and odd_profile.json are required; report.json, ingest.geojson
+// are used when present; scenario files and the spec when named).
+PageData page_data(const ReportOptions& options);
+PageData page_data(const ReportOptions& options, const Loaded& loaded);
+
+// The data document parsed, for tools and tests.
+nlohmann::ordered_json report_data(const ReportOptions& options);
+
+// The page: the template with the libraries, the app and the data inlined.
+void write_html(const PageData& data, std::ostream& out);
 std::string render_html(const nlohmann::ordered_json& data);
 
 } // namespace railodd::report
