@@ -42,6 +42,8 @@ TEST_P(XodrSharedMaps, ValidatesImportsAndCarriesTheMappedFeatures) {
     EXPECT_EQ(val.exit_code, 0) << v["findings"].dump(1).substr(0, 3000);
     EXPECT_TRUE(v["schema"]["valid"].get<bool>()) << v["schema"].dump(1);
     EXPECT_TRUE(v["netconvert"]["passed"].get<bool>()) << v["netconvert"].dump(1);
+    // No plan-view record under 1 cm (readers divide by its length).
+    EXPECT_EQ(v["summary"]["short_records"].get<int>(), 0) << v["summary"]["shortest_record"].dump();
 
     const auto report = nlohmann::json::parse(read_file(out / "report.json"));
     const auto& odr = report["opendrive"];
@@ -125,6 +127,7 @@ TEST_P(XodrSampleRouteMap, ValidatesAndImports) {
     const auto v = nlohmann::json::parse(val.output.substr(val.output.find('{')));
     EXPECT_EQ(val.exit_code, 0) << val.output.substr(0, 3000);
     EXPECT_EQ(v["summary"]["switches"], 3);
+    EXPECT_EQ(v["summary"]["short_records"].get<int>(), 0) << v["summary"]["shortest_record"].dump();
     EXPECT_EQ(v["summary"]["stations"], 2);
     const auto report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
     EXPECT_EQ(report["opendrive"]["level_crossings"], 1);

@@ -74,7 +74,13 @@ void check_joint(Context& ctx, const Road& road, std::size_t i) {
 void check_records(Context& ctx, const Road& road) {
     for (std::size_t i = 0; i < road.geometries.size(); ++i) {
         const GeometryRecord& g = road.geometries[i];
-        ++ctx.result.summary.geometries_by_kind[kind_name(g.kind)];
+        Summary& sum = ctx.result.summary;
+        ++sum.geometries_by_kind[kind_name(g.kind)];
+        sum.short_records += g.length < 0.01 ? 1 : 0;
+        if (g.length < sum.shortest_record_m) {
+            sum.shortest_record_m = g.length;
+            sum.shortest_record_at = "road " + road.id + " s=" + std::to_string(g.s);
+        }
         if (!(g.length > 0.0)) {
             ctx.error("road", road.id, g.s, "geometry_length", record_name(road, i) + " has length " +
                                                                    std::to_string(g.length) + " (must be > 0)");

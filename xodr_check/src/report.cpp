@@ -73,6 +73,9 @@ nlohmann::ordered_json summary_json(const Summary& s, const Limits& l) {
     j["switches"] = s.switches;
     j["stations"] = s.stations;
     j["links_checked"] = s.links_checked;
+    j["short_records"] = s.short_records;
+    j["shortest_record"] = {{"value", std::isfinite(s.shortest_record_m) ? s.shortest_record_m : 0.0},
+                            {"where", s.shortest_record_at}};
     j["max_gap_m"] = worst_json(s.gap_m, l.gap_m);
     j["max_heading_jump_rad"] = worst_json(s.heading_jump_rad, l.heading_rad);
     j["max_rail_curvature_jump_per_m"] = worst_json(s.rail_curvature_jump, l.rail_curvature_per_m);
@@ -105,6 +108,10 @@ std::string verdict_text(const Verdict& v, std::size_t max_findings) {
         o << ' ' << kind << ' ' << n;
     }
     o << "\n  links checked: " << s.links_checked << '\n';
+    if (std::isfinite(s.shortest_record_m)) {
+        o << "  shortest record:         " << s.shortest_record_m << " m at " << s.shortest_record_at << " ("
+          << s.short_records << " under 1 cm)\n";
+    }
     o << worst_line("max gap:                 ", s.gap_m, v.limits.gap_m, "m");
     o << worst_line("max heading jump:        ", s.heading_jump_rad, v.limits.heading_rad, "rad");
     o << worst_line("max rail curvature jump: ", s.rail_curvature_jump, v.limits.rail_curvature_per_m, "1/m");

@@ -5,7 +5,7 @@
 
 namespace railodd::xodr {
 
-std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment) {
+std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment, bool rail) {
     std::vector<PlanGeometry> out;
     const std::vector<geometry::Pose> starts = geometry::primitive_starts(alignment);
     double s = 0.0;
@@ -33,6 +33,14 @@ std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment) {
         out.push_back(g);
         s += p.length;
     }
+    if (out.empty()) { // no primitive at all: a zero-length line at the start
+        PlanGeometry g;
+        g.x = alignment.start.x;
+        g.y = alignment.start.y;
+        g.hdg = alignment.start.hdg;
+        out.push_back(g);
+    }
+    merge_short_records(out, min_record_length_m, rail);
     return out;
 }
 

@@ -8,8 +8,28 @@
 
 namespace railodd::xodr {
 
-// One record per primitive, each starting at the exact chained pose.
-std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment);
+// No planView record is shorter than this where it can be helped.
+inline constexpr double min_record_length_m = 0.01;
+
+// One record per primitive, each starting at the exact chained pose; then
+// merge_short_records(). An alignment without primitives gets one line of
+// length 0 at its start.
+// `rail`: curvature must stay continuous (a road's may jump where a merge needs it).
+std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment, bool rail);
+
+// Records under min_length merged into their neighbours, curvature kept
+// continuous at every joint and the total length unchanged: a run of short
+// records whose curvature nets out (zero-length records, a millimetre
+// spiral-arc-spiral corner) is taken up by a line or arc beside it along its
+// own circle; a run whose curvature changes (a short transition) is
+// lengthened to min_length, the length taken from a line or arc beside it.
+// Each record keeps its start pose, so only the joint beside the run moves,
+// by about a curvature times min_length squared; every merge is checked
+// against the continuity limits and undone if it breaks them. On roads that
+// are not rail a spiral beside a run may also take it at its own rate.
+// Left as they are: records shorter than min_length in all, and runs no
+// neighbour can take within the limits.
+void merge_short_records(std::vector<PlanGeometry>& records, double min_length, bool rail);
 
 // The polynomials of [s0, s1] re-expanded about the new origin s0 (Taylor
 // shift), so the profile of a piece of a track is exactly the track's.

@@ -175,7 +175,7 @@ private:
         r.junction = junction;
         r.type.clear();
         r.rail = true;
-        r.plan_view = plan_view_of(parts[s0 > 0.0 ? 1 : 0]);
+        r.plan_view = plan_view_of(parts[s0 > 0.0 ? 1 : 0], true);
         if (e < in_.profiles.size()) {
             r.elevation = cut_polys(in_.profiles[e].polys, s0, s1);
         }

@@ -12,6 +12,7 @@
 #include "railodd/xodr/road_network.hpp"
 
 #include "railodd/geometry/indexed_alignment.hpp"
+#include "plan_view.hpp"
 #include "road_junctions.hpp"
 #include "road_lanes.hpp"
 
@@ -265,40 +266,6 @@ std::vector<LaneSection> cut_sections(const std::vector<LaneSection>& sections, 
     return out;
 }
 
-std::vector<PlanGeometry> plan_view(const Alignment& a) {
-    std::vector<PlanGeometry> out;
-    const std::vector<Pose> starts = geometry::primitive_starts(a);
-    double s = 0.0;
-    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
-        const auto& p = a.primitives[i];
-        // Zero-length records are not valid OpenDRIVE; the next record starts
-        // at the same exact pose anyway.
-        if (p.length <= 0.0 && !(out.empty() && i + 1 == a.primitives.size())) {
-            continue;
-        }
-        PlanGeometry g;
-        g.kind = p.kind == geometry::PrimitiveKind::line  ? PlanGeometry::Kind::line
-                 : p.kind == geometry::PrimitiveKind::arc ? PlanGeometry::Kind::arc
-                                                           : PlanGeometry::Kind::spiral;
-        g.s = s;
-        g.x = starts[i].x;
-        g.y = starts[i].y;
-        g.hdg = starts[i].hdg;
-        g.length = p.length;
-        g.curv_start = p.curv_start;
-        g.curv_end = p.curv_end;
-        out.push_back(g);
-        s += p.length;
-    }
-    if (out.empty()) { // no primitive at all: a zero-length line at the start
-        PlanGeometry g;
-        g.x = a.start.x;
-        g.y = a.start.y;
-        g.hdg = a.start.hdg;
-        out.push_back(g);
-    }
-    return out;
-}
 
 // Pose of a leg's road at the node, heading into the node (in) or out of it.
 Pose leg_pose(const EdgeRoad& r, bool at_end, bool into_node) {
@@ -623,7 +590,7 @@ std::vector<BuiltRoad> add_road_network(const geometry::TrackGraph& graph, const
         road.type = r.road_type;
         road.predecessor = r.predecessor;
         road.successor = r.successor;
-        road.plan_view = plan_view(r.kept);
+        road.plan_view = plan_view_of(r.kept, false);
         road.lane_sections = r.kept_sections;
         road.user_data.push_back({"osm", join_ids(r.way_ids, "way:")});
         road.user_data.push_back({"osm_edge_nodes", std::to_string(r.node_ids[0]) + "," + std::to_string(r.node_ids[1])});

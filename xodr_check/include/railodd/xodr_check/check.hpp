@@ -56,6 +56,9 @@ struct Summary {
     std::size_t switches = 0;
     std::size_t stations = 0;
     std::size_t links_checked = 0; // road-road links and junction contacts compared geometrically
+    std::size_t short_records = 0; // plan-view records under 1 cm (readers divide by a record's length)
+    double shortest_record_m = std::numeric_limits<double>::infinity();
+    std::string shortest_record_at;
     Worst gap_m;                   // geometry joints, road links, junction contacts
     Worst heading_jump_rad;
     Worst rail_curvature_jump; // 1/m, rail roads only
