@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
 #include <tuple>
 
 namespace railodd::ingest {
@@ -29,14 +31,73 @@ BBox raw_bounds(const std::vector<Way>& ways) {
 
 LonLat centre_of(const std::vector<Way>& ways) {
     const BBox b = raw_bounds(ways);
-    return {(b.west + b.east) / 2, (b.south + b.north) / 2};
+    // Tracks across the antimeridian span nearly 360 degrees in [-180, 180]:
+    // measured in [0, 360) they are narrow, and their centre is there.
+    double west = 360, east = 0;
+    for (const auto& way : ways) {
+        for (const auto& part : way.parts) {
+            for (const auto& node : part) {
+                const double lon = node.lonlat.lon < 0 ? node.lonlat.lon + 360 : node.lonlat.lon;
+                west = std::min(west, lon);
+                east = std::max(east, lon);
+            }
+        }
+    }
+    double lon = (b.west + b.east) / 2;
+    if (east - west < b.east - b.west) {
+        lon = (west + east) / 2;
+        lon = lon >= 180 ? lon - 360 : lon;
+    }
+    return {lon, (b.south + b.north) / 2};
+}
+
+void drop_duplicate_tracks(std::vector<Way>& tracks, std::vector<Dropped>& dropped) {
+    // The same nodes in the same or the reverse order: one track mapped twice.
+    std::map<std::vector<std::int64_t>, std::int64_t> seen;
+    std::vector<std::size_t> order(tracks.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tracks[a].id < tracks[b].id; });
+    std::vector<bool> drop(tracks.size(), false);
+    for (std::size_t i : order) {
+        std::vector<std::int64_t> key;
+        for (const auto& part : tracks[i].parts) {
+            if (!key.empty()) {
+                key.push_back(0); // between parts, so that the reverse reads alike
+            }
+            for (const auto& n : part) key.push_back(n.id);
+        }
+        std::vector<std::int64_t> rev(key.rbegin(), key.rend());
+        const auto& k = std::min(key, rev);
+        const auto [it, fresh] = seen.emplace(k, tracks[i].id);
+        if (!fresh) {
+            drop[i] = true;
+            const bool ogr = tracks[i].origin == Origin::ogr;
+            dropped.push_back({"track", ogr ? "ogr_feature" : "way", tracks[i].id,
+                               std::string{"duplicate: the same nodes as "} + (ogr ? "feature " : "way ") +
+                                   std::to_string(it->second) + " (mapped twice)"});
+        }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < tracks.size(); ++i) {
+        if (!drop[i]) {
+            if (kept != i) { // a vector moved onto itself would be emptied
+                tracks[kept] = std::move(tracks[i]);
+            }
+            ++kept;
+        }
+    }
+    tracks.resize(kept);
 }
 
 BBox lonlat_bounds(const std::vector<Way>& ways, double margin_m) {
     const BBox b = raw_bounds(ways);
     // 10 % more than a degree of latitude's length: a conservative prefilter.
     const double dlat = margin_m / 111000.0 * 1.1;
-    const double max_abs_lat = std::min(89.0, std::max(std::abs(b.south), std::abs(b.north)) + dlat);
+    const double max_abs_lat = std::max(std::abs(b.south), std::abs(b.north)) + dlat;
+    // Near a pole, or across the antimeridian, every longitude.
+    if (max_abs_lat >= 89.0 || b.east - b.west > 180.0) {
+        return {-180.0, std::max(-90.0, b.south - dlat), 180.0, std::min(90.0, b.north + dlat)};
+    }
     const double dlon = dlat / std::cos(max_abs_lat * M_PI / 180.0);
     return {b.west - dlon, b.south - dlat, b.east + dlon, b.north + dlat};
 }

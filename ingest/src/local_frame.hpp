@@ -9,6 +9,10 @@ namespace railodd::ingest {
 // Centre of the lon/lat bounds of all way nodes.
 LonLat centre_of(const std::vector<Way>& ways);
 
+// Tracks whose nodes are another track's (same order or reversed) are
+// dropped with the reason; the lowest way id is kept.
+void drop_duplicate_tracks(std::vector<Way>& tracks, std::vector<Dropped>& dropped);
+
 // Lon/lat bounds of all way nodes grown by `margin_m` metres on every side.
 BBox lonlat_bounds(const std::vector<Way>& ways, double margin_m);
 

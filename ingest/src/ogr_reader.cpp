@@ -270,6 +270,7 @@ IngestResult read_vector(const fs::path& file, const fs::path& mapping_file, con
         }
         result.tracks.push_back(std::move(fw.way));
     }
+    drop_duplicate_tracks(result.tracks, result.dropped);
     if (result.tracks.empty()) {
         throw InputError(file.string(), "no track in the selection (" + result.selection + "); " +
                                             std::to_string(result.dropped.size()) + " feature(s) dropped");

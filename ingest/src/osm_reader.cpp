@@ -44,7 +44,10 @@ BBox selection_box(const Selection& sel, const IngestOptions& o) {
     }
     const double m = selection_margin_m + std::max({o.feature_distance_m, o.station_distance_m, 0.0});
     const double dlat = m / 111000.0;
-    const double max_lat = std::min(89.0, std::max(std::abs(b.south), std::abs(b.north)) + dlat);
+    const double max_lat = std::max(std::abs(b.south), std::abs(b.north)) + dlat;
+    if (max_lat >= 89.0) { // near a pole: every longitude
+        return {-180.0, std::max(-90.0, b.south - dlat), 180.0, std::min(90.0, b.north + dlat)};
+    }
     const double dlon = m / (111000.0 * std::cos(max_lat * 3.14159265358979323846 / 180.0));
     return {b.west - dlon, b.south - dlat, b.east + dlon, b.north + dlat};
 }
@@ -262,6 +265,7 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     // Phase 5: the selection, the local frame and the track geometry in it.
     timer.start("select_and_project");
     select_tracks(ways.tracks, locs, sel, result);
+    drop_duplicate_tracks(result.tracks, result.dropped);
     require_tracks(file, sel, relations, result);
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);

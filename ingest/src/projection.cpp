@@ -36,7 +36,8 @@ struct LocalProjection::Impl {
 LocalProjection::LocalProjection(LonLat origin)
     : origin_{round6(origin.lon), round6(origin.lat)}, proj_string_(tmerc_string(origin_)),
       impl_(std::make_unique<Impl>()) {
-    if (!(std::abs(origin_.lat) < 89.0) || !(std::abs(origin_.lon) <= 180.0)) {
+    // Transverse Mercator is regular up to the pole itself.
+    if (!(std::abs(origin_.lat) < 90.0) || !(std::abs(origin_.lon) <= 180.0)) {
         throw InputError("projection", "origin out of range: lon " + std::to_string(origin_.lon) +
                                            ", lat " + std::to_string(origin_.lat));
     }
