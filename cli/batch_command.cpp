@@ -33,6 +33,11 @@ CLI::App* BatchCommand::add(CLI::App& parent) {
     app->add_option("--shard", opt_.shard, "Run only shard I of N (I/N, 0-based: routes k with k mod N = I)")
         ->capture_default_str();
     app->add_flag("--force", opt_.force, "Rerun routes whose outputs are up to date");
+    app->add_option("--route-timeout", opt_.route_timeout_s,
+                    "Seconds a route may run before it is killed and reported as timed out; the others go on (0: no "
+                    "limit)")
+        ->capture_default_str()
+        ->check(finite_range(0.0, 1e7));
     return app;
 }
 
@@ -193,7 +198,8 @@ int BatchCommand::run() {
         tasks.push_back(make_task(route, root, opt_.jobs > 1));
         task_result.push_back(i);
     }
-    run_tasks(tasks, opt_.jobs, progress, [&](std::size_t t, const TaskOutcome& o) {
+    run_tasks(
+        tasks, opt_.jobs, progress, [&](std::size_t t, const TaskOutcome& o) {
         RouteResult& r = results[task_result[t]];
         r.outcome = o;
         r.status = o.ok ? "ok" : "failed";
@@ -207,7 +213,7 @@ int BatchCommand::run() {
         }
         progress.finished(r.route->id, r.status, o.seconds,
                           r.outcome.ok ? "" : r.outcome.failed_step + ": " + r.outcome.error);
-    });
+        }, opt_.route_timeout_s);
     progress.close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const std::string suffix = shard_suffix(shard_index_, shard_count_);

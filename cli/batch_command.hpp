@@ -17,6 +17,7 @@ struct BatchOptions {
     unsigned jobs = 0;          // 0: hardware threads
     std::string shard = "0/1";  // I/N, 0-based: matches SLURM_ARRAY_TASK_ID and JOB_COMPLETION_INDEX
     bool force = false;
+    double route_timeout_s = 6 * 3600.0; // a route still running after this is killed and fails (0: no limit)
 };
 
 class BatchCommand : public Command {

@@ -1,9 +1,14 @@
 #include "batch_runner.hpp"
 
+#include <csignal>
+#include <cstdio>
+
 #include "railodd/util/errors.hpp"
 
 #include <chrono>
 #include <cerrno>
+#include <csignal>
+#include <cstdio>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -132,6 +137,7 @@ struct Running {
     pid_t pid = -1;
     Clock::time_point start;
     TaskOutcome outcome;
+    double timed_out_after = 0.0; // > 0: killed for running longer than this
 };
 
 // Starts the running task's current step; false (outcome filled) if it could not.
@@ -158,6 +164,12 @@ bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, co
         o.failed_step = step.name;
         o.error = WIFSIGNALED(status) ? std::string{"killed by signal "} + std::to_string(WTERMSIG(status))
                                       : error_line(step.log);
+        if (r.timed_out_after > 0.0) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "timed out: still running after %g s (--route-timeout), killed",
+                          r.timed_out_after);
+            o.error = buf;
+        }
         return true;
     }
     if (++r.step < tasks[r.task].steps.size()) {
@@ -169,8 +181,26 @@ bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, co
 
 } // namespace
 
+namespace {
+
+// A task past its time is killed; wait4 then reaps it as failed.
+void kill_overdue(std::vector<Running>& running, double timeout_s) {
+    if (timeout_s <= 0.0) {
+        return;
+    }
+    const auto now = Clock::now();
+    for (auto& r : running) {
+        if (r.timed_out_after == 0.0 && std::chrono::duration<double>(now - r.start).count() > timeout_s) {
+            ::kill(r.pid, SIGKILL);
+            r.timed_out_after = timeout_s;
+        }
+    }
+}
+
+} // namespace
+
 void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
-               const std::function<void(std::size_t, const TaskOutcome&)>& on_done) {
+               const std::function<void(std::size_t, const TaskOutcome&)>& on_done, double timeout_s) {
     std::vector<Running> running;
     std::size_t next = 0;
     auto finish = [&](Running& r) {
@@ -191,6 +221,7 @@ void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress
             shown.emplace_back(tasks[r.task].id, tasks[r.task].steps[r.step].name);
         }
         progress.running(shown);
+        kill_overdue(running, timeout_s);
         int status = 0;
         rusage ru{};
         const pid_t pid = ::wait4(-1, &status, WNOHANG, &ru);

@@ -58,8 +58,10 @@ private:
 };
 
 // Runs every task, at most `jobs` at once; on_done is called in the order the
-// tasks finish (index into `tasks`).
+// tasks finish (index into `tasks`). A task still running timeout_s seconds
+// after it started (0: no limit) is killed (SIGKILL) and fails with
+// "timed out"; the others go on.
 void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
-               const std::function<void(std::size_t, const TaskOutcome&)>& on_done);
+               const std::function<void(std::size_t, const TaskOutcome&)>& on_done, double timeout_s = 0.0);
 
 } // namespace railodd::cli

@@ -121,6 +121,45 @@ TEST_F(CliBatch, ConvertsRoutesReportsTheFailedOneAndSkipsUpToDateOnes) {
     EXPECT_EQ(read_file(out / "whole" / "map.xodr"), map_before);
 }
 
+// A route that runs too long is killed and reported; the others finish; a
+// re-run resumes with only the unfinished route, whose folder held nothing
+// that looked finished.
+TEST_F(CliBatch, ARouteOverItsTimeIsKilledAndTheRerunResumesIt) {
+    const fs::path dir = root() / "timeout";
+    fs::create_directories(dir);
+    // A 50,000-node zig-zag way: about 5 s to convert here; the sample well under 1 s.
+    std::string osm = "<?xml version=\"1.0\"?>\n<osm version=\"0.6\">\n";
+    std::string way = "<way id=\"10\" version=\"1\">";
+    for (int i = 1; i <= 50000; ++i) {
+        osm += "<node id=\"" + std::to_string(i) + "\" version=\"1\" lat=\"" + (i % 2 ? "48.000018" : "48.0") +
+               "\" lon=\"" + std::to_string(10.0 + i * 2e-5) + "\"/>\n";
+        way += "<nd ref=\"" + std::to_string(i) + "\"/>";
+    }
+    write_file(dir / "slow.osm", osm + way + "<tag k=\"railway\" v=\"rail\"/></way>\n</osm>\n");
+    write_file(dir / "routes.yaml", "routes:\n  - id: slow\n    input: slow.osm\n"
+                                    "  - id: whole\n    input: " + (root() / "sample" / "sample_route.osm").string() + "\n");
+    const fs::path out = dir / "out";
+    const auto r = run_railodd("batch " + quoted(dir / "routes.yaml") + " -o " + quoted(out) + " --jobs 2 --route-timeout 2");
+    EXPECT_NE(r.exit_code, 0) << r.output;
+    auto routes = by_id(read_json(out / "batch_summary.json"));
+    EXPECT_EQ(routes["whole"]["status"], "ok");
+    EXPECT_EQ(routes["slow"]["status"], "failed");
+    EXPECT_NE(routes["slow"]["error"].get<std::string>().find("timed out"), std::string::npos) << routes["slow"];
+    EXPECT_NE(routes["slow"]["error"].get<std::string>().find("--route-timeout"), std::string::npos);
+    EXPECT_FALSE(fs::exists(out / "slow" / "map.xodr"));
+    EXPECT_FALSE(fs::exists(out / "slow" / ".railodd-batch-stamp.json"));
+    // Resumed: the finished route is skipped, the killed one runs to the end.
+    const auto again = run_railodd("batch " + quoted(dir / "routes.yaml") + " -o " + quoted(out) + " --jobs 2");
+    EXPECT_EQ(again.exit_code, 0) << again.output;
+    routes = by_id(read_json(out / "batch_summary.json"));
+    EXPECT_EQ(routes["whole"]["status"], "skipped");
+    EXPECT_EQ(routes["slow"]["status"], "ok");
+    EXPECT_TRUE(fs::is_regular_file(out / "slow" / "map.xodr"));
+    const auto bad = run_railodd("batch " + quoted(dir / "routes.yaml") + " -o " + quoted(out) + " --route-timeout -1");
+    EXPECT_EQ(bad.exit_code, 1) << bad.output;
+    EXPECT_NE(bad.output.find("--route-timeout"), std::string::npos) << bad.output;
+}
+
 TEST_F(CliBatch, OutputsAreByteIdenticalWhateverTheJobs) {
     const auto one = batch(root() / "jobs1", "--jobs 1");
     const auto two = batch(root() / "jobs2", "--jobs 2");
