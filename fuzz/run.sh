@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (clang, ASan + UBSan) into build-fuzz/ and
+# runs each for SECONDS (default 60) on a corpus seeded from the project's
+# own files. Prints executions and coverage per harness; exits 1 when any
+# harness found a crash, leak, timeout or sanitizer report (the input is in
+# build-fuzz/artifacts/). Usage: fuzz/run.sh [SECONDS] [HARNESS...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+secs="${1:-60}"
+shift || true
+harnesses=("$@")
+if [ ${#harnesses[@]} -eq 0 ]; then
+  harnesses=(fuzz_tag_values fuzz_yaml_loaders fuzz_xodr_reader fuzz_polygon fuzz_osm_ingest)
+fi
+b=build-fuzz
+cmake -S . -B "$b" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAILODD_FUZZ=ON \
+  -DRAILODD_BUILD_TESTS=OFF -DRAILODD_BUILD_BENCH=OFF >/dev/null
+cmake --build "$b" -j"$(nproc)" --target "${harnesses[@]}" >/dev/null
+mkdir -p "$b/artifacts"
+
+seed() { # seed NAME FILE [PREFIX-BYTE]
+  local dir="$b/corpus/$1"
+  mkdir -p "$dir"
+  local out="$dir/seed-$(basename "$2")${3:+-$3}"
+  if [ -n "${3:-}" ]; then { printf "\\x$3"; cat "$2"; } >"$out"; else cp "$2" "$out"; fi
+}
+seeds="$b/seeds"
+mkdir -p "$seeds"
+i=0
+for v in 160 "60 mph" "RU:urban" "15000;25000" "1435;1000" "1520" "16.7" "yes" "no" "contact_line;rail" \
+         "GSM-R" "DE-ESO:ks" "railway:signal:main:form" "light" "12.4" "full" "main" "siding" "both" "backward"; do
+  printf '%s' "$v" >"$seeds/tag$i"; seed fuzz_tag_values "$seeds/tag$i"; i=$((i + 1))
+done
+seed fuzz_yaml_loaders data/odd/railway_odd.yaml 00
+seed fuzz_yaml_loaders data/odd/example_odd_spec.yaml 01
+seed fuzz_yaml_loaders data/scenario/assets.yaml 02
+seed fuzz_yaml_loaders data/scenario/templates.yaml 03
+printf '{"type":"Polygon","coordinates":[[[10,48],[11,48],[11,49],[10,48]]]}' >"$seeds/poly.geojson"
+printf '{"type":"FeatureCollection","features":[{"type":"Feature","geometry":{"type":"MultiPolygon","coordinates":[[[[10,48],[11,48],[11,49],[10,48]]]]},"properties":{}}]}' >"$seeds/multi.geojson"
+seed fuzz_polygon "$seeds/poly.geojson"
+seed fuzz_polygon "$seeds/multi.geojson"
+printf 'n1 v1 x10.0 y48.0\nn2 v1 x10.01 y48.0\nn3 v1 x10.02 y48.001\nw1 v1 Trailway=rail,maxspeed=100 Nn1,n2,n3\n' >"$seeds/track.opl"
+seed fuzz_osm_ingest "$seeds/track.opl" 01
+if [ -x build/railodd ]; then # the sample route, its map and (cut) its OSM
+  build/railodd sample -o "$seeds/sample" >/dev/null
+  build/railodd convert "$seeds/sample/sample_route.osm" -o "$seeds/map" --no-report --road-corridor 0 >/dev/null
+  seed fuzz_xodr_reader "$seeds/map/map.xodr"
+  head -c 60000 "$seeds/sample/sample_route.osm" >"$seeds/sample_head.osm"
+  seed fuzz_osm_ingest "$seeds/sample_head.osm" 00
+fi
+printf '<OpenDRIVE><header revMajor="1" revMinor="7"/><road id="1" length="10" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView></road></OpenDRIVE>' >"$seeds/tiny.xodr"
+seed fuzz_xodr_reader "$seeds/tiny.xodr"
+
+status=0
+printf '%-20s %12s %8s %8s %s\n' harness executions cov ft result
+for h in "${harnesses[@]}"; do
+  log="$b/artifacts/$h.log"
+  if "$b/fuzz/$h" "$b/corpus/$h" -max_total_time="$secs" -timeout=25 -rss_limit_mb=4096 -print_final_stats=1 \
+       -artifact_prefix="$b/artifacts/$h-" >"$log" 2>&1; then
+    result=ok
+  else
+    result="FOUND (see $log)"
+    status=1
+  fi
+  execs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo "?")
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+' || echo "?")
+  ft=$(grep -oE 'ft: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+' || echo "?")
+  printf '%-20s %12s %8s %8s %s\n' "$h" "$execs" "$cov" "$ft" "$result"
+done
+exit $status
