@@ -10,7 +10,8 @@ secs="${1:-60}"
 shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
-  harnesses=(fuzz_tag_values fuzz_yaml_loaders fuzz_xodr_reader fuzz_polygon fuzz_osm_ingest)
+  harnesses=(fuzz_tag_values fuzz_yaml_loaders fuzz_xodr_reader fuzz_polygon fuzz_osm_ingest fuzz_field_mapping
+             fuzz_routes_file)
 fi
 b=build-fuzz
 cmake -S . -B "$b" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAILODD_FUZZ=ON \
@@ -48,6 +49,10 @@ if [ -x build/railodd ]; then # the sample route, its map and (cut) its OSM
   head -c 60000 "$seeds/sample/sample_route.osm" >"$seeds/sample_head.osm"
   seed fuzz_osm_ingest "$seeds/sample_head.osm" 00
 fi
+printf 'layer: gleisachsen\nid_field: gid\ncrs: EPSG:25832\ntags:\n  railway: rail\n  maxspeed: {field: vmax, default: "100"}\n  electrified:\n    field: elek\n    values: {"1": contact_line, "0": "no"}\n  gauge: "1435"\n' >"$seeds/mapping.yaml"
+seed fuzz_field_mapping "$seeds/mapping.yaml"
+printf 'defaults:\n  estimate_cant: true\n  scenarios: {strategy: pairwise, count: 4}\nroutes:\n  - id: whole\n    input: a.osm\n  - id: west\n    input: a.osm\n    bbox: [10.14, 48.29, 10.20, 48.31]\n  - id: lost\n    input: b.osm\n    scenarios: false\n' >"$seeds/routes.yaml"
+seed fuzz_routes_file "$seeds/routes.yaml"
 printf '<OpenDRIVE><header revMajor="1" revMinor="7"/><road id="1" length="10" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView></road></OpenDRIVE>' >"$seeds/tiny.xodr"
 seed fuzz_xodr_reader "$seeds/tiny.xodr"
 
