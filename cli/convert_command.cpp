@@ -279,10 +279,11 @@ ingest::IngestResult read_input(const ConvertOptions& o) {
     return ingest::read_osm(o.input, io);
 }
 
-// report.json's sections of every stage, in pipeline order.
+// report.json's sections of every stage, in pipeline order (the route's last,
+// when the profile follows one).
 nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const Geometry& geo,
                                      nlohmann::ordered_json geometry_report, const xodr::MapBuild& map,
-                                     const xodr::MapInput& map_input) {
+                                     const xodr::MapInput& map_input, const odd::Route* route) {
     nlohmann::ordered_json report = make_report(result);
     report["geometry"] = std::move(geometry_report);
     report["vertical"] = geometry::profiles_report(geo.tracks, geo.profiles);
@@ -290,13 +291,19 @@ nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const G
     report["topology"] = geometry::topology_report(geo.crossings, geo.attachment, result.features);
     report["opendrive"] = xodr::map_report(map, map_input);
     report["roads"] = geometry::report_section(geo.roads, geo.fitted_roads)["summary"];
+    if (route) {
+        report["route"] = odd::route_report(*route);
+    }
     return report;
 }
 
 // report.html from the map, profile, report and mapped tracks in memory: the
 // page is staged and committed with the files it shows.
+// Its time is the phase report_html of result.timings.
 void write_page(OutputStage& stage, const std::string& outdir, const odd::OddProfile& profile,
-                const nlohmann::ordered_json& report, const xodr::Map& map, const ingest::IngestResult& result) {
+                const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result) {
+    PhaseTimer timer;
+    timer.start("report_html");
     std::vector<std::vector<std::array<double, 2>>> track_nodes;
     for (const auto& way : result.tracks) {
         for (const auto& part : way.parts) {
@@ -312,6 +319,8 @@ void write_page(OutputStage& stage, const std::string& outdir, const odd::OddPro
     o.fallback_taxonomy = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
     const report::PageData page = report::page_data(o, {&profile, &report, &map, &track_nodes});
     stage.write_with("report.html", [&](std::ostream& out) { report::write_html(page, out); });
+    timer.stop();
+    result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 }
 
 } // namespace
@@ -384,16 +393,10 @@ int ConvertCommand::run() {
     profile_written.get();
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
-    nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input);
-    if (route) {
-        report["route"] = odd::route_report(*route);
-    }
+    nlohmann::ordered_json report =
+        stage_reports(result, geo, std::move(geometry_report), map, map_input, route ? &*route : nullptr);
     if (!opt_.no_report) {
-        PhaseTimer page_timer;
-        page_timer.start("report_html");
         write_page(stage, opt_.outdir, profile, report, map.map, result);
-        page_timer.stop();
-        result.timings.insert(result.timings.end(), page_timer.seconds().begin(), page_timer.seconds().end());
     }
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);

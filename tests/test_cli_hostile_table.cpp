@@ -66,11 +66,11 @@ std::string expand(std::string s, const fs::path& dir, const fs::path& root) {
 
 void write(const fs::path& p, const std::string& text) { write_file(p, text); }
 
-std::vector<Row> rows() {
-    const auto none = [](const fs::path&) {};
+const auto none = [](const fs::path&) {};
+
+std::vector<Row> convert_rows() {
     const std::string conv = "convert ";
     return {
-        // --- convert -----------------------------------------------------
         {"convert: missing input", none, conv + "$D/nope.osm -o $D/out", 2, {"nope.osm", "no such file"}, After::absent},
         {"convert: empty .osm", [](const fs::path& d) { write(d / "e.osm", ""); }, conv + "$D/e.osm -o $D/out", 2,
          {"e.osm"}, After::absent},
@@ -103,7 +103,11 @@ std::vector<Row> rows() {
          {"out"}, After::untouched},
         {"convert: --road-corridor NaN", none, conv + "$O -o $D/out --road-corridor nan", 1, {"--road-corridor"},
          After::absent},
-        // --- scenarios ---------------------------------------------------
+    };
+}
+
+std::vector<Row> scenario_and_check_rows() {
+    return {
         {"scenarios: map folder without a profile", [](const fs::path& d) { fs::create_directories(d / "m"); },
          "scenarios --map $D/m -o $D/out", 2, {"odd_profile.json"}, After::absent},
         {"scenarios: unknown --strategy", none, "scenarios --map $M -o $D/out --strategy all", 1, {"--strategy"},
@@ -131,7 +135,11 @@ std::vector<Row> rows() {
         {"profile: spec naming an unknown element",
          [](const fs::path& d) { write(d / "spec.yaml", "odd_spec: x\nelements:\n  - path: Scenery/Nothing\n    allowed: true\n"); },
          "profile $M --odd-spec $D/spec.yaml", 2, {"spec.yaml", "Scenery/Nothing"}, After::absent},
-        // --- batch -------------------------------------------------------
+    };
+}
+
+std::vector<Row> batch_report_play_rows() {
+    return {
         {"batch: routes file without routes", [](const fs::path& d) { write(d / "r.yaml", "routes: []\n"); },
          "batch $D/r.yaml -o $D/out", 2, {"r.yaml"}, After::absent},
         {"batch: duplicate route ids",
@@ -172,6 +180,14 @@ std::vector<Row> rows() {
          After::absent, "$S/play.json"},
         {"merge: missing batch folder", none, "merge $D/nothing -o $D/out/merged.json", 2, {"nothing"}, After::absent},
     };
+}
+
+std::vector<Row> rows() {
+    std::vector<Row> all = convert_rows();
+    for (auto part : {scenario_and_check_rows(), batch_report_play_rows()}) {
+        all.insert(all.end(), part.begin(), part.end());
+    }
+    return all;
 }
 
 TEST_F(CliHostileTable, EveryRowExitsAsDocumentedAndLeavesNoOutput) {

@@ -82,6 +82,7 @@ void select_tracks(std::vector<RawWay>& raw, const NodeLocations& locs, const Se
         add_repairs(result, "track", built);
         result.tracks.push_back(std::move(built.way));
     }
+    drop_duplicate_tracks(result.tracks, result.dropped);
 }
 
 SegmentGrid track_grid(const std::vector<Way>& tracks, double cell) {
@@ -265,7 +266,6 @@ IngestResult read_osm(const fs::path& file, const IngestOptions& options) {
     // Phase 5: the selection, the local frame and the track geometry in it.
     timer.start("select_and_project");
     select_tracks(ways.tracks, locs, sel, result);
-    drop_duplicate_tracks(result.tracks, result.dropped);
     require_tracks(file, sel, relations, result);
     result.projection = LocalProjection(centre_of(result.tracks));
     project_ways(result.tracks, result.projection);

@@ -9,7 +9,6 @@
 #include "railodd/util/errors.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <set>
 
 namespace railodd::report::detail {
@@ -38,13 +37,7 @@ void add_line(const ojson& coords, const GeoFrame& frame, std::vector<Way>& ways
 
 // The track ways of ingest.geojson (a clipped way is a MultiLineString).
 std::vector<Way> track_ways(const std::filesystem::path& file, const GeoFrame& frame) {
-    std::ifstream in(file, std::ios::binary);
-    ojson j;
-    try {
-        j = ojson::parse(in);
-    } catch (const std::exception& e) {
-        throw InputError(file.string(), std::string{"not valid GeoJSON: "} + e.what());
-    }
+    const ojson j = read_json_file(file, "mapped tracks, GeoJSON");
     if (!j.contains("features") || !j["features"].is_array()) {
         throw InputError(file.string(), "not a GeoJSON FeatureCollection (no \"features\" array)");
     }

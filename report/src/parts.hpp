@@ -107,6 +107,10 @@ struct NodeFit {
 NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
                  const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes);
 
+// A JSON file railodd wrote; throws InputError naming the file and `what`
+// when it is missing or not JSON.
+ojson read_json_file(const std::filesystem::path& file, const std::string& what);
+
 // Coverage, manifest and play results of a scenario set.
 ojson scenario_section(const std::filesystem::path& dir, const std::filesystem::path& play_file,
                        const RoadData& roads);

@@ -9,7 +9,6 @@
 #include "railodd/odd/taxonomy.hpp"
 #include "railodd/util/errors.hpp"
 
-#include <fstream>
 
 namespace railodd::report {
 
@@ -23,16 +22,9 @@ namespace {
 // network's reality would list every element.
 constexpr std::size_t max_violations = 5000;
 
+// report.json where it is (convert writes it; a folder from elsewhere may lack it).
 ojson optional_json(const fs::path& file) {
-    if (!fs::is_regular_file(file)) {
-        return ojson::object();
-    }
-    std::ifstream in(file, std::ios::binary);
-    try {
-        return ojson::parse(in);
-    } catch (const std::exception& e) {
-        throw InputError(file.string(), std::string{"not valid JSON: "} + e.what());
-    }
+    return fs::is_regular_file(file) ? detail::read_json_file(file, "convert report") : ojson::object();
 }
 
 // As `railodd profile` chooses it: the option, else the file the profile was
