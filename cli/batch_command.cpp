@@ -142,9 +142,9 @@ void print_table(const std::vector<RouteResult>& results, const json& counts, do
 BatchTask make_task(const BatchRoute& route, const fs::path& root, bool single_thread) {
     const fs::path abs = fs::absolute(root);
     const fs::path dir{route.id};
-    BatchTask t{route.id, {{"convert", convert_args(route, dir, single_thread), abs / dir / "convert.log", abs}}};
+    BatchTask t{route.id, {{"convert", convert_args(route, dir, single_thread), abs / dir / "convert.log", abs, {}}}};
     if (route.scenarios) {
-        t.steps.push_back({"scenarios", scenarios_args(route, dir), abs / dir / "scenarios.log", abs});
+        t.steps.push_back({"scenarios", scenarios_args(route, dir), abs / dir / "scenarios.log", abs, {}});
     }
     return t;
 }

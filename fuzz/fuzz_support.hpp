@@ -45,4 +45,16 @@ void expect_clean(F&& f) {
     }
 }
 
+// Runs a whole command: only the errors main() maps to a documented exit
+// code (usage, input) are fine; std::invalid_argument escaping a command is an
+// internal error there, so it is a finding here.
+template <class F>
+void expect_exit_code(F&& f) {
+    try {
+        f();
+    } catch (const railodd::InputError&) {
+    } catch (const railodd::UsageError&) {
+    }
+}
+
 } // namespace railodd::fuzz

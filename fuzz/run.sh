@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer harnesses (clang, ASan + UBSan) into build-fuzz/ and
+# Builds the libFuzzer harnesses (clang, ASan + UBSan) into build-san/ and
 # runs each for SECONDS (default 60) on a corpus seeded from the project's
 # own files. Prints executions and coverage per harness; exits 1 when any
 # harness found a crash, leak, timeout or sanitizer report (the input is in
-# build-fuzz/artifacts/). Usage: fuzz/run.sh [SECONDS] [HARNESS...]
+# build-san/artifacts/). Usage: fuzz/run.sh [SECONDS] [HARNESS...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 secs="${1:-60}"
@@ -11,12 +11,10 @@ shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
   harnesses=(fuzz_tag_values fuzz_yaml_loaders fuzz_xodr_reader fuzz_polygon fuzz_osm_ingest fuzz_field_mapping
-             fuzz_routes_file)
+             fuzz_routes_file fuzz_convert)
 fi
-b=build-fuzz
-cmake -S . -B "$b" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAILODD_FUZZ=ON \
-  -DRAILODD_BUILD_TESTS=OFF -DRAILODD_BUILD_BENCH=OFF >/dev/null
-cmake --build "$b" -j"$(nproc)" --target "${harnesses[@]}" >/dev/null
+b=build-san
+bash scripts/build_san.sh "${harnesses[@]}"
 mkdir -p "$b/artifacts"
 
 seed() { # seed NAME FILE [PREFIX-BYTE]
@@ -49,6 +47,25 @@ if [ -x build/railodd ]; then # the sample route, its map and (cut) its OSM
   head -c 60000 "$seeds/sample/sample_route.osm" >"$seeds/sample_head.osm"
   seed fuzz_osm_ingest "$seeds/sample_head.osm" 00
 fi
+# convert: flag byte (bit 0 OPL, 1 report, 2 cant, 3 --from A --to B) + OSM
+seed fuzz_convert "$seeds/track.opl" 01
+seed fuzz_convert "$seeds/track.opl" 07
+{
+  printf '<?xml version="1.0"?>\n<osm version="0.6">\n'
+  awk 'BEGIN { for (i = 1; i <= 40; i++)
+    printf "<node id=\"%d\" version=\"1\" lat=\"%.7f\" lon=\"%.7f\"/>\n", i, 48 + i * 0.0002 + i * i * 0.000002, 10 + i * 0.0003 }'
+  printf '<node id="100" version="1" lat="48.0042" lon="10.0030"><tag k="railway" v="station"/><tag k="name" v="A"/></node>\n'
+  printf '<node id="101" version="1" lat="48.0110" lon="10.0110"><tag k="railway" v="station"/><tag k="name" v="B"/></node>\n'
+  printf '<node id="102" version="1" lat="48.0010" lon="10.0000"/><node id="103" version="1" lat="48.0050" lon="10.0065"/>\n'
+  printf '<way id="1" version="1">'; for i in $(seq 1 25); do printf '<nd ref="%d"/>' "$i"; done
+  printf '<tag k="railway" v="rail"/><tag k="maxspeed" v="120"/><tag k="electrified" v="contact_line"/></way>\n'
+  printf '<way id="2" version="1">'; for i in $(seq 25 40); do printf '<nd ref="%d"/>' "$i"; done
+  printf '<tag k="railway" v="rail"/><tag k="bridge" v="yes"/><tag k="railway:cant" v="80"/></way>\n'
+  printf '<way id="3" version="1"><nd ref="102"/><nd ref="10"/><nd ref="103"/><tag k="highway" v="secondary"/></way>\n'
+  printf '</osm>\n'
+} >"$seeds/small_network.osm"
+seed fuzz_convert "$seeds/small_network.osm" 00
+seed fuzz_convert "$seeds/small_network.osm" 0e
 printf 'layer: gleisachsen\nid_field: gid\ncrs: EPSG:25832\ntags:\n  railway: rail\n  maxspeed: {field: vmax, default: "100"}\n  electrified:\n    field: elek\n    values: {"1": contact_line, "0": "no"}\n  gauge: "1435"\n' >"$seeds/mapping.yaml"
 seed fuzz_field_mapping "$seeds/mapping.yaml"
 printf 'defaults:\n  estimate_cant: true\n  scenarios: {strategy: pairwise, count: 4}\nroutes:\n  - id: whole\n    input: a.osm\n  - id: west\n    input: a.osm\n    bbox: [10.14, 48.29, 10.20, 48.31]\n  - id: lost\n    input: b.osm\n    scenarios: false\n' >"$seeds/routes.yaml"
@@ -60,7 +77,7 @@ status=0
 printf '%-20s %12s %8s %8s %s\n' harness executions cov ft result
 for h in "${harnesses[@]}"; do
   log="$b/artifacts/$h.log"
-  if "$b/fuzz/$h" "$b/corpus/$h" -max_total_time="$secs" -timeout=25 -rss_limit_mb=4096 -print_final_stats=1 \
+  if "$b/fuzz/$h" "$b/corpus/$h" -max_total_time="$secs" -timeout=25 -rss_limit_mb=4096 -close_fd_mask=1 -print_final_stats=1 \
        -artifact_prefix="$b/artifacts/$h-" >"$log" 2>&1; then
     result=ok
   else

@@ -13,6 +13,7 @@ packages=(
   osmium-tool
   libxml2-utils python3-xmlschema sumo sumo-tools
   chromium
+  slurmd slurmctld slurm-client munge
   clang libclang-rt-14-dev
 )
 # Node.js for the report's web libraries (npm) and its browser test; a newer

@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # The README's test command: install, build, run every test. Tests that need
 # ../shared/data are labelled `shared` and skip with a message when it is absent.
-# Then a smoke of every libFuzzer harness (fuzz/run.sh, clang with ASan and
-# UBSan): RAILODD_FUZZ_SECONDS each (default 60; 0 skips it).
+# Then the sanitizer build (clang, ASan + UBSan, build-san/): the unit and CLI
+# tests again (scripts/test_san.sh; RAILODD_SANITIZE=0 skips them) and a smoke
+# of every libFuzzer harness (fuzz/run.sh): RAILODD_FUZZ_SECONDS each
+# (default 60; 0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 (cd build && ctest --output-on-failure -j"$(nproc)" "$@")
+if [ "${RAILODD_SANITIZE:-1}" != 0 ]; then
+  bash scripts/test_san.sh
+fi
 if [ "${RAILODD_FUZZ_SECONDS:-60}" != 0 ]; then
   bash fuzz/run.sh "${RAILODD_FUZZ_SECONDS:-60}"
 fi

@@ -225,7 +225,7 @@ TEST_F(CliHostileInput, OddProfileWithWrongTypesOrHugeNumbers) {
         ASSERT_NE(at, std::string::npos);
         text.replace(at, e.from.size(), e.to);
         write_file(dir / "odd_profile.json", text);
-        for (const std::string cmd : {"profile " + quoted(dir), "profile --json " + quoted(dir),
+        for (const std::string& cmd : {"profile " + quoted(dir), "profile --json " + quoted(dir),
                                       "scenarios --map " + quoted(dir) + " -o " + quoted(dir / "scen")}) {
             const auto r = run_railodd(cmd);
             SCOPED_TRACE(cmd);
@@ -279,7 +279,7 @@ TEST_F(CliHostileInput, TagTextThatIsNotXmlIsRepairedAndReported) {
     b.write(dir / "bad.osm.pbf");
     write_file(dir / "bad.opl", "n1 v1 x10.0 y48.0\nn2 v1 x10.002 y48.0\nn3 v1 x10.004 y48.0\n"
                                 "w78 v1 Trailway=rail,name=a%1%b%d800%c%7f%d Nn1,n2,n3\n");
-    for (const std::string input : std::vector<std::string>{"bad.osm.pbf", "bad.opl"}) {
+    for (const std::string& input : std::vector<std::string>{"bad.osm.pbf", "bad.opl"}) {
         SCOPED_TRACE(input);
         const fs::path out = dir / (input + ".out");
         const auto r = run_railodd("convert " + quoted(dir / input) + " -o " + quoted(out));

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 
 using namespace railodd::geometry;
@@ -245,6 +248,61 @@ TEST(Projection, RecoversStationAndOffset) {
             EXPECT_NEAR(r.s, s, 1e-7) << "s " << s << " offset " << off;
             EXPECT_NEAR(r.offset, off, 1e-8) << "s " << s << " offset " << off;
             EXPECT_NEAR(r.distance, std::abs(off), 1e-8);
+        }
+    }
+}
+
+namespace {
+
+// A long random track of lines and arcs (R 150-3000 m) that winds back across
+// itself, so that the search tree's boxes overlap.
+Alignment winding_alignment(unsigned seed, int pieces) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> len(5.0, 200.0), radius(150.0, 3000.0), coin(0.0, 1.0);
+    Alignment a;
+    a.start = {1000.0 * coin(rng), -500.0 * coin(rng), 6.0 * coin(rng), 0.0};
+    for (int i = 0; i < pieces; ++i) {
+        a.primitives.push_back(coin(rng) < 0.3 ? make_line(len(rng))
+                                               : make_arc(len(rng), (coin(rng) < 0.8 ? 1.0 : -1.0) / radius(rng)));
+    }
+    return a;
+}
+
+// Nearest distance by brute force: every 5 cm of [s0, s1] (the indexed
+// evaluation is checked against the plain one above).
+double dense_nearest(const IndexedAlignment& a, double x, double y, double s0, double s1) {
+    double best = std::numeric_limits<double>::infinity();
+    for (double s = s0; s <= s1; s += 0.05) {
+        const Pose p = a.evaluate(s);
+        best = std::min(best, std::hypot(p.x - x, p.y - y));
+    }
+    return best;
+}
+
+} // namespace
+
+// The nearest-sample search prunes subtrees of boxes: on long tracks that
+// cross themselves it must still find the nearest point a scan of the whole
+// track finds, over the whole track and over a stretch of it.
+TEST(Projection, TreeSearchFindsTheNearestPointOnLongWindingTracks) {
+    for (const unsigned seed : {1u, 2u, 3u}) {
+        const Alignment a = winding_alignment(seed, 300);
+        const IndexedAlignment idx(a);
+        std::mt19937 rng(seed + 100);
+        std::uniform_real_distribution<double> along(0.0, idx.length()), off(-40.0, 40.0);
+        for (int q = 0; q < 30; ++q) {
+            const Pose p = evaluate(a, along(rng));
+            const double o = off(rng);
+            const double x = p.x - o * std::sin(p.hdg), y = p.y + o * std::cos(p.hdg);
+            const Projection r = idx.project(x, y);
+            EXPECT_LE(r.distance, dense_nearest(idx, x, y, 0.0, idx.length()) + 1e-6) << "seed " << seed << " query " << q;
+            const double s0 = along(rng), s1 = std::min(idx.length(), s0 + 300.0);
+            const Projection w = idx.project_within(x, y, s0, s1);
+            // The stretch is widened to the samples around it (2 m apart at most)
+            // and the search brackets the nearest one by its neighbours.
+            EXPECT_GE(w.s, s0 - 4.0);
+            EXPECT_LE(w.s, s1 + 4.0);
+            EXPECT_LE(w.distance, dense_nearest(idx, x, y, s0, s1) + 1e-6) << "seed " << seed << " query " << q;
         }
     }
 }

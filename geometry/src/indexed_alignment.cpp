@@ -2,6 +2,7 @@
 #include "railodd/geometry/indexed_alignment.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -52,16 +53,30 @@ IndexedAlignment::IndexedAlignment(Alignment alignment, double sample_step)
     }
     const Pose end = evaluate(length_);
     samples_.push_back({length_, end.x, end.y});
-    for (std::size_t first = 0; first < samples_.size(); first += block_size) {
-        const std::size_t last = std::min(samples_.size(), first + block_size);
-        Box b{samples_[first].x, samples_[first].y, samples_[first].x, samples_[first].y};
-        for (std::size_t i = first + 1; i < last; ++i) {
-            b.x0 = std::min(b.x0, samples_[i].x);
-            b.y0 = std::min(b.y0, samples_[i].y);
-            b.x1 = std::max(b.x1, samples_[i].x);
-            b.y1 = std::max(b.y1, samples_[i].y);
+    build_tree();
+}
+
+void IndexedAlignment::build_tree() {
+    const std::size_t blocks = (samples_.size() + block_size - 1) / block_size;
+    leaves_ = 1;
+    while (leaves_ < blocks) {
+        leaves_ *= 2;
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    tree_.assign(2 * leaves_, Box{inf, inf, -inf, -inf}); // empty: infinitely far
+    for (std::size_t b = 0; b < blocks; ++b) {
+        Box& q = tree_[leaves_ + b];
+        for (std::size_t i = b * block_size; i < std::min(samples_.size(), (b + 1) * block_size); ++i) {
+            q.x0 = std::min(q.x0, samples_[i].x);
+            q.y0 = std::min(q.y0, samples_[i].y);
+            q.x1 = std::max(q.x1, samples_[i].x);
+            q.y1 = std::max(q.y1, samples_[i].y);
         }
-        boxes_.push_back(b);
+    }
+    for (std::size_t n = leaves_ - 1; n >= 1; --n) {
+        const Box& l = tree_[2 * n];
+        const Box& r = tree_[2 * n + 1];
+        tree_[n] = {std::min(l.x0, r.x0), std::min(l.y0, r.y0), std::max(l.x1, r.x1), std::max(l.y1, r.y1)};
     }
 }
 
@@ -120,15 +135,22 @@ double IndexedAlignment::refine(double x, double y, double lo, double hi, double
 }
 
 std::size_t IndexedAlignment::nearest_sample(double x, double y, std::size_t first, std::size_t last) const {
-    // The nearest sample, the lowest index among equals: exactly what a scan
-    // of every sample finds, but whole blocks whose box lies farther than
-    // the best so far are skipped. The block nearest by its box is scanned
-    // first, so few others remain: the scan made measuring a long chain's
-    // fit quadratic in its length.
+    // The nearest sample in [first, last], the lowest index among equals:
+    // exactly what a scan of every sample finds, but a subtree whose box lies
+    // farther than the best so far is skipped, and the nearer child is
+    // searched first. A flat scan of the blocks made measuring a long
+    // chain's fit quadratic in its length.
     std::size_t best = first;
     double best_d2 = std::numeric_limits<double>::infinity();
-    auto scan = [&](std::size_t from, std::size_t to) { // [from, to)
-        for (std::size_t i = from; i < to; ++i) {
+    const std::size_t b0 = first / block_size, b1 = last / block_size;
+    auto box_d2 = [&](std::size_t n) {
+        const Box& q = tree_[n];
+        const double dx = std::max({q.x0 - x, 0.0, x - q.x1});
+        const double dy = std::max({q.y0 - y, 0.0, y - q.y1});
+        return dx * dx + dy * dy;
+    };
+    auto scan_block = [&](std::size_t b) {
+        for (std::size_t i = std::max(first, b * block_size); i < std::min(last + 1, (b + 1) * block_size); ++i) {
             const double dx = samples_[i].x - x;
             const double dy = samples_[i].y - y;
             const double d2 = dx * dx + dy * dy;
@@ -138,30 +160,32 @@ std::size_t IndexedAlignment::nearest_sample(double x, double y, std::size_t fir
             }
         }
     };
-    auto box_d2 = [&](std::size_t b) {
-        const Box& q = boxes_[b];
-        const double dx = std::max({q.x0 - x, 0.0, x - q.x1});
-        const double dy = std::max({q.y0 - y, 0.0, y - q.y1});
-        return dx * dx + dy * dy;
+    // Depth-first with an explicit stack (at most two entries per level);
+    // node n covers blocks [lo, hi].
+    struct Visit {
+        std::size_t node, lo, hi;
+        double d2;
     };
-    const std::size_t b0 = first / block_size, b1 = last / block_size;
-    std::size_t seed = b0;
-    double seed_d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t b = b0; b <= b1; ++b) {
-        const double d2 = box_d2(b);
-        if (d2 < seed_d2) {
-            seed_d2 = d2;
-            seed = b;
+    std::array<Visit, 2 * 64> stack;
+    std::size_t top = 0;
+    stack[top++] = {1, 0, leaves_ - 1, box_d2(1)};
+    while (top > 0) {
+        const Visit v = stack[--top];
+        if (v.hi < b0 || v.lo > b1 || v.d2 > best_d2) {
+            continue;
         }
-    }
-    auto scan_block = [&](std::size_t b) {
-        scan(std::max(first, b * block_size), std::min(last + 1, (b + 1) * block_size));
-    };
-    scan_block(seed);
-    for (std::size_t b = b0; b <= b1; ++b) {
-        if (b != seed && box_d2(b) <= best_d2) {
-            scan_block(b);
+        if (v.node >= leaves_) {
+            scan_block(v.lo);
+            continue;
         }
+        const std::size_t mid = v.lo + (v.hi - v.lo) / 2;
+        Visit l{2 * v.node, v.lo, mid, box_d2(2 * v.node)};
+        Visit r{2 * v.node + 1, mid + 1, v.hi, box_d2(2 * v.node + 1)};
+        if (r.d2 < l.d2) { // pushed last, searched first
+            std::swap(l, r);
+        }
+        stack[top++] = r;
+        stack[top++] = l;
     }
     return best;
 }

@@ -36,7 +36,7 @@ double wrap(double a) {
 
 class ChainBuilder {
 public:
-    ChainBuilder(const odd::OddProfile& p, const std::vector<double>& length) : p_(p), length_(length) {
+    ChainBuilder(const odd::OddProfile& p, const std::vector<double>& length) : length_(length) {
         used_.assign(length.size(), false);
         for (const auto& e : p.track_ends) {
             if (e.track < length.size()) {
@@ -104,7 +104,6 @@ private:
         }
     }
 
-    const odd::OddProfile& p_;
     const std::vector<double>& length_;
     std::vector<bool> used_;
     std::map<std::size_t, const odd::TrackEnd*> ends_;

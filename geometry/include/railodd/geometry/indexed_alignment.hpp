@@ -36,7 +36,9 @@ private:
         double y;
     };
 
-    // Bounding box of block_size consecutive samples.
+    // Bounding box of block_size consecutive samples; tree_ holds them as the
+    // leaves of a binary tree (heap order) whose inner boxes enclose their
+    // children, so a nearest-sample search costs O(log n), not O(n), blocks.
     struct Box {
         double x0, y0, x1, y1;
     };
@@ -44,6 +46,7 @@ private:
 
     std::size_t primitive_at(double s) const;
     std::size_t nearest_sample(double x, double y, std::size_t first, std::size_t last) const;
+    void build_tree();
     double refine(double x, double y, double lo, double hi, double guess) const;
     Projection project_samples(double x, double y, std::size_t first, std::size_t last) const;
 
@@ -52,7 +55,8 @@ private:
     std::vector<double> s_starts_;
     double length_ = 0.0;
     std::vector<Sample> samples_;
-    std::vector<Box> boxes_;
+    std::vector<Box> tree_;
+    std::size_t leaves_ = 0; // blocks rounded up to a power of two
 };
 
 } // namespace railodd::geometry
