@@ -72,6 +72,12 @@ printf 'defaults:\n  estimate_cant: true\n  scenarios: {strategy: pairwise, coun
 seed fuzz_routes_file "$seeds/routes.yaml"
 printf '<OpenDRIVE><header revMajor="1" revMinor="7"/><road id="1" length="10" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView></road></OpenDRIVE>' >"$seeds/tiny.xodr"
 seed fuzz_xodr_reader "$seeds/tiny.xodr"
+# Every input a harness once failed on (fuzz/regressions/HARNESS/), fixed since:
+# seeded, so a regression is met in the first seconds of a run.
+for dir in fuzz/regressions/*/; do
+  h=$(basename "$dir")
+  for f in "$dir"*; do seed "$h" "$f"; done
+done
 
 status=0
 printf '%-20s %12s %8s %8s %s\n' harness executions cov ft result

@@ -6,6 +6,7 @@
 #include "osm_passes.hpp"
 #include "osm_relations.hpp"
 #include "pbf_strings.hpp"
+#include "text_coordinates.hpp"
 #include "road_selection.hpp"
 #include "segment_grid.hpp"
 #include "way_parts.hpp"
@@ -130,7 +131,9 @@ std::string data_timestamp(const fs::path& file) {
     return std::regex_match(t, iso) ? t : std::string{};
 }
 
-// A readable OSM file; a PBF one's string tables hold no NUL (pbf_strings.hpp).
+// A readable OSM file; a PBF one's string tables hold no NUL (pbf_strings.hpp),
+// an XML or OPL one's coordinates no exponent libosmium overflows on
+// (text_coordinates.hpp).
 void check_osm_input(const fs::path& file) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
@@ -139,6 +142,7 @@ void check_osm_input(const fs::path& file) {
     if (osmium::io::File{file.string()}.format() == osmium::io::file_format::pbf) {
         check_pbf_strings(file);
     }
+    check_text_coordinates(file);
 }
 
 // Every node the ways read reference.
