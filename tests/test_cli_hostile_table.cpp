@@ -76,6 +76,11 @@ std::vector<Row> convert_rows() {
          {"e.osm"}, After::absent},
         {"convert: truncated XML", [](const fs::path& d) { write(d / "t.osm", "<?xml version=\"1.0\"?><osm><node id=\"1\" lat="); },
          conv + "$D/t.osm -o $D/out", 2, {"t.osm"}, After::absent},
+        {"convert: a latitude of 1e20 (libosmium would overflow)",
+         [](const fs::path& d) {
+             write(d / "x.osm", "<osm version=\"0.6\"><node id=\"1\" lat=\"1e20\" lon=\"1\"/></osm>");
+         },
+         conv + "$D/x.osm -o $D/out", 2, {"x.osm", "line 1", "lat=\"1e20\"", "exponent"}, After::absent},
         {"convert: no railway in the file",
          [](const fs::path& d) { write(d / "n.osm", "<osm version=\"0.6\"><node id=\"1\" lat=\"1\" lon=\"1\"/></osm>"); },
          conv + "$D/n.osm -o $D/out", 2, {"n.osm", "no usable railway track"}, After::absent},

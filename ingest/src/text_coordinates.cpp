@@ -54,8 +54,9 @@ std::string printable(std::string_view v) {
 class Collector {
 public:
     explicit Collector(const std::filesystem::path& file) : file_(file) {}
-    void start(std::string label) {
+    void start(std::string label, std::string close = {}) {
         label_ = std::move(label);
+        close_ = std::move(close);
         value_.clear();
         on_ = true;
     }
@@ -66,7 +67,7 @@ public:
     }
     void finish() {
         if (on_ && value_.size() < max_value && unsafe_exponent(value_)) {
-            throw InputError(file_.string(), "line " + std::to_string(line_) + ": coordinate " + printable(label_ + value_) +
+            throw InputError(file_.string(), "line " + std::to_string(line_) + ": coordinate " + printable(label_ + value_ + close_) +
                                                  " has an exponent beyond any coordinate (over " +
                                                  std::to_string(static_cast<int>(max_degrees)) +
                                                  " degrees), which libosmium cannot read safely");
@@ -78,7 +79,8 @@ public:
 
 private:
     std::filesystem::path file_;
-    std::string label_;
+    std::string label_; // what precedes the value: lat=" or x
+    std::string close_; // and follows it: the quote
     std::string value_;
     bool on_ = false;
     long line_ = 1;
@@ -119,7 +121,7 @@ private:
             state_ = State::value;
             const bool coordinate = name_.ends_with("lat") || name_.ends_with("lon");
             if (coordinate) {
-                c_.start(name_ + "=" + ch);
+                c_.start(name_ + "=" + ch, std::string(1, ch));
             }
         } else if (ch == '=' || std::isspace(static_cast<unsigned char>(ch))) {
             name_done_ = true;
