@@ -83,6 +83,9 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_option("--to", opt_.to, "Profile the route to this station (with --from)");
     app->add_flag("--no-timings", opt_.no_timings, "Leave timings out of report.json (byte-identical reruns)");
     app->add_flag("--no-report", opt_.no_report, "Do not write report.html (the route's HTML page, `railodd report`)");
+    app->add_flag("--debug-outputs", opt_.debug_outputs,
+                  "Also write ingest.geojson (the selected input), geometry.geojson and roads.geojson (the fitted "
+                  "centrelines in WGS84): diagnostics; `railodd report` reads the mapped nodes from ingest.geojson");
     return app;
 }
 
@@ -323,6 +326,25 @@ void write_page(OutputStage& stage, const std::string& outdir, const odd::OddPro
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 }
 
+// The diagnostic GeoJSON files (the selected input; the fitted track and road
+// centrelines sampled back to WGS84), with --debug-outputs only. Without it,
+// any left by an earlier run go: they would describe another map.
+void write_debug_outputs(OutputStage& stage, bool wanted, const ingest::IngestResult& result, const Geometry& geo) {
+    if (!wanted) {
+        for (const char* name : {"ingest.geojson", "geometry.geojson", "roads.geojson"}) {
+            stage.remove_on_commit(name);
+        }
+        return;
+    }
+    stage.write_with("ingest.geojson", [&](std::ostream& out) { ingest::write_geojson(result, out); });
+    stage.write_with("geometry.geojson", [&](std::ostream& out) {
+        geometry::write_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track", out);
+    });
+    stage.write_with("roads.geojson", [&](std::ostream& out) {
+        geometry::write_geojson(geo.roads, geo.fitted_roads, result.projection, "road", out);
+    });
+}
+
 } // namespace
 
 int ConvertCommand::run() {
@@ -383,13 +405,7 @@ int ConvertCommand::run() {
             stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
         });
     stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out, odd_user_data); });
-    stage.write_with("ingest.geojson", [&](std::ostream& out) { ingest::write_geojson(result, out); });
-    stage.write_with("geometry.geojson", [&](std::ostream& out) {
-        geometry::write_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track", out);
-    });
-    stage.write_with("roads.geojson", [&](std::ostream& out) {
-        geometry::write_geojson(geo.roads, geo.fitted_roads, result.projection, "road", out);
-    });
+    write_debug_outputs(stage, opt_.debug_outputs, result, geo);
     profile_written.get();
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
@@ -397,6 +413,8 @@ int ConvertCommand::run() {
         stage_reports(result, geo, std::move(geometry_report), map, map_input, route ? &*route : nullptr);
     if (!opt_.no_report) {
         write_page(stage, opt_.outdir, profile, report, map.map, result);
+    } else {
+        stage.remove_on_commit("report.html"); // an earlier run's page shows another map
     }
     if (!opt_.no_timings) {
         report["timings_s"] = timings_json(result.timings);

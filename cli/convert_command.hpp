@@ -27,6 +27,7 @@ struct ConvertOptions {
     unsigned threads = 0; // 0: libosmium's default pool size
     bool no_timings = false;
     bool no_report = false; // report.html not written
+    bool debug_outputs = false; // ingest.geojson, geometry.geojson, roads.geojson written
     bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
     std::string odr_version = "1.7";
     std::string taxonomy; // ODD taxonomy; empty: data/odd/railway_odd.yaml

@@ -7,7 +7,8 @@ bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/railodd sample -o out/sample
 # The sample is drawn with 0.3 m node scatter (sample_route_truth.json).
-./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif --node-noise 0.3 --estimate-cant
+./build/railodd convert out/sample/sample_route.osm -o out/sample_route --dem out/sample/sample_route_dem.tif --node-noise 0.3 --estimate-cant \
+  --debug-outputs
 ./build/railodd validate out/sample_route/map.xodr --netconvert
 ./build/railodd profile out/sample_route --odd-spec data/odd/example_odd_spec.yaml || [ $? -eq 5 ] # exit 5: outside the ODD (the industrial spur)
 ./build/railodd scenarios --map out/sample_route -o out/scenarios --odd-spec data/odd/example_odd_spec.yaml --quiet
@@ -23,5 +24,5 @@ echo
 echo "outputs:"
 echo "  sample route (OSM, DEM, ground truth): $(pwd)/out/sample/"
 echo "  the route on one page (open in a browser): $(pwd)/out/sample_route/report.html"
-echo "  conversion (map.xodr, odd_profile.json/.geojson/.csv, report.json, ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
+echo "  conversion (map.xodr, odd_profile.json/.geojson/.csv, report.json; with --debug-outputs ingest.geojson, geometry.geojson, roads.geojson): $(pwd)/out/sample_route/"
 echo "  scenarios (ID.xosc, ID.behavior.yaml, catalogs/, distributions/, manifest.json, coverage.json/.txt; play.json/.txt, play/ when played): $(pwd)/out/scenarios/"

@@ -45,7 +45,7 @@ TEST(CliConvert, WritesReportWithAccounting) {
     const auto dir = scratch_dir();
     const auto in = write_file(dir / "in.opl", small_opl);
     const auto out = dir / "out";
-    const auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(out));
+    const auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(out) + " --debug-outputs");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto report = nlohmann::json::parse(read_file(out / "report.json"));
     EXPECT_EQ(report["input"]["track_ways"], 2);
@@ -111,7 +111,7 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
     }
     for (const char* threads : {"1", "2", "4"}) {
         const auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / threads) +
-                               " --no-timings --threads " + threads);
+                               " --no-timings --debug-outputs --threads " + threads);
         ASSERT_EQ(r.exit_code, 0) << r.output;
     }
     for (const char* name : {"map.xodr", "report.json", "ingest.geojson", "geometry.geojson", "roads.geojson"}) {
@@ -128,7 +128,8 @@ TEST(CliConvert, SampleRouteGeometrySections) {
     ASSERT_EQ(run_railodd("sample -o " + quoted(dir / "sample")).exit_code, 0);
     const auto osm = dir / "sample" / "sample_route.osm";
     const auto dem = dir / "sample" / "sample_route_dem.tif";
-    const auto r = run_railodd("convert " + quoted(osm) + " -o " + quoted(dir / "out") + " --dem " + quoted(dem));
+    const auto r =
+        run_railodd("convert " + quoted(osm) + " -o " + quoted(dir / "out") + " --dem " + quoted(dem) + " --debug-outputs");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const auto report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
     EXPECT_EQ(report["geometry"]["summary"]["switch_vertices"], 3);
@@ -147,4 +148,35 @@ TEST(CliConvert, SampleRouteGeometrySections) {
     EXPECT_GT(report2["cant"]["curves_with_estimated_cant"], 0);
     EXPECT_EQ(report2["cant"]["max_cant_mm"], 160.0);
     EXPECT_EQ(report2["vertical"]["sources"]["flat"], report2["geometry"]["summary"]["edges"]);
+}
+
+// The diagnostic GeoJSON files only with --debug-outputs; a rerun without it
+// (or with --no-report) removes what an earlier run left, which would
+// describe another map.
+TEST(CliConvert, DiagnosticFilesOnlyWhenAskedAndNoStaleOnes) {
+    const auto dir = scratch_dir();
+    const auto in = write_file(dir / "in.opl", small_opl);
+    const auto out = dir / "out";
+    const std::vector<std::string> debug = {"ingest.geojson", "geometry.geojson", "roads.geojson"};
+    auto r = run_railodd("convert " + quoted(in) + " -o " + quoted(out) + " --no-timings");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const auto& f : debug) {
+        EXPECT_FALSE(fs::exists(out / f)) << f;
+    }
+    EXPECT_TRUE(fs::exists(out / "report.html"));
+    const std::string map = read_file(out / "map.xodr");
+    r = run_railodd("convert " + quoted(in) + " -o " + quoted(out) + " --no-timings --debug-outputs");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const auto& f : debug) {
+        EXPECT_TRUE(fs::exists(out / f)) << f;
+        EXPECT_NE(r.output.find(f), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(read_file(out / "map.xodr"), map); // the flag changes no other output
+    r = run_railodd("convert " + quoted(in) + " -o " + quoted(out) + " --no-timings --no-report");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const auto& f : debug) {
+        EXPECT_FALSE(fs::exists(out / f)) << f;
+    }
+    EXPECT_FALSE(fs::exists(out / "report.html"));
+    EXPECT_EQ(read_file(out / "map.xodr"), map);
 }

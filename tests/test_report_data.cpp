@@ -39,7 +39,7 @@ protected:
         ASSERT_EQ(run_railodd("sample -o " + quoted(root() / "sample")).exit_code, 0);
         auto c = run_railodd("convert " + quoted(root() / "sample" / "sample_route.osm") + " -o " + quoted(map_dir()) +
                              " --dem " + quoted(root() / "sample" / "sample_route_dem.tif") +
-                             " --node-noise 0.3 --estimate-cant --no-timings");
+                             " --node-noise 0.3 --estimate-cant --no-timings --debug-outputs");
         ASSERT_EQ(c.exit_code, 0) << c.output;
         c = run_railodd("scenarios --map " + quoted(map_dir()) + " -o " + quoted(scen_dir()) + " --odd-spec " +
                         quoted(spec()) + " --quiet");

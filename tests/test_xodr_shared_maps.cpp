@@ -34,7 +34,7 @@ TEST_P(XodrSharedMaps, ValidatesImportsAndCarriesTheMappedFeatures) {
     const Case c = GetParam();
     const fs::path out = scratch_dir() / (std::string{c.file} + "-" + c.revision);
     const auto conv = run_railodd("convert " + quoted(shared_data() / "osm" / c.file) + " -o " + quoted(out) +
-                              " --no-timings --odr-version " + c.revision);
+                              " --no-timings --debug-outputs --odr-version " + c.revision);
     ASSERT_EQ(conv.exit_code, 0) << conv.output;
     const auto val = run_railodd("validate " + quoted(out / "map.xodr") + " --xsd-dir " +
                              quoted(fs::canonical(shared_data() / "schemas")) + " --netconvert --json");

@@ -186,7 +186,9 @@ NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json,
     track_figures(report_json, nf.fit);
     const auto file = map_dir / "ingest.geojson";
     if (!track_nodes && !std::filesystem::is_regular_file(file)) {
-        nf.fit["reason"] = "ingest.geojson is not in " + map_dir.string() + ": the mapped nodes are not known";
+        nf.fit["reason"] = "ingest.geojson is not in " + map_dir.string() +
+                           ": the mapped nodes are not known (convert with --debug-outputs writes it; convert's own "
+                           "report.html has them)";
         return nf;
     }
     const std::vector<Way> ways = track_nodes ? given_ways(*track_nodes) : track_ways(file, frame);

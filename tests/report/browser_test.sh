@@ -34,7 +34,7 @@ if [ "$mode" = relation ]; then
 fi
 "$railodd" sample -o "$work/sample" >/dev/null
 "$railodd" convert "$work/sample/sample_route.osm" -o "$work/map" --dem "$work/sample/sample_route_dem.tif" \
-  --node-noise 0.3 --estimate-cant --no-timings >/dev/null
+  --node-noise 0.3 --estimate-cant --no-timings --debug-outputs >/dev/null
 "$railodd" scenarios --map "$work/map" -o "$work/scen" --odd-spec "$repo/data/odd/example_odd_spec.yaml" --quiet >/dev/null
 esmini="$repo/../shared/tools/esmini/bin/esmini"
 if [ -x "$esmini" ]; then
