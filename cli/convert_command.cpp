@@ -376,8 +376,12 @@ int ConvertCommand::run() {
     mo.date = map_date(opt_.date, result);
     xodr::MapBuild map = xodr::build_map(map_input, mo);
     require_rail_roads(opt_.input, map);
+    // The tracks' part of report.json while their indexes exist, and before
+    // the profile does: the two never take memory at the same time.
+    timer.start("geometry_report");
+    nlohmann::ordered_json geometry_report = geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed);
     // Phase 4: ODD tags on every stretch and point of track, also carried
-    // into the map's <userData>.
+    // into the map's <userData>; then the indexes go.
     timer.start("odd_tagging");
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
     const odd::OddProfile network = odd::tag_route({map_input, map}, taxonomy);
@@ -385,10 +389,6 @@ int ConvertCommand::run() {
     odd::OddProfile along;
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
     const odd::OddProfile& profile = route ? along : network;
-    // The tracks' part of report.json while their indexes exist; then the
-    // indexes go.
-    timer.start("geometry_report");
-    nlohmann::ordered_json geometry_report = geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed);
     std::vector<geometry::IndexedAlignment>().swap(geo.indexed);
 
     // Phase 5: stage every output, then move them into place together. The
