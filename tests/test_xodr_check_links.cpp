@@ -198,3 +198,22 @@ TEST(XodrCheckLinks, CrossingJunctionListsExistingRoads) {
     EXPECT_EQ(r.errors(), 1u) << listing(r);
     EXPECT_EQ(r.summary.version, "1.8");
 }
+
+// Integers no int can hold (a lane link's from, found by fuzz_xodr_reader as
+// -2e109) are findings naming the attribute, not a conversion.
+TEST(XodrCheckLinks, LaneLinkBeyondIntRangeIsAFindingNotAConversion) {
+    for (const char* value : {"-2e109", "2147483648", "1e300"}) {
+        SCOPED_TRACE(value);
+        const auto r = check(junction_doc(0.0, std::string{"<laneLink from=\""} + value + "\" to=\"-1\"/>"));
+        bool named = false;
+        for (const auto& f : r.findings) {
+            named = named || (f.check == "attribute" && f.message.find("@from is out of range: '" + std::string{value}) !=
+                                                            std::string::npos);
+        }
+        EXPECT_TRUE(named) << listing(r);
+    }
+    const auto ok = check(junction_doc(0.0, "<laneLink from=\"-1\" to=\"-1\"/>"));
+    for (const auto& f : ok.findings) {
+        EXPECT_NE(f.check, "attribute") << listing(ok);
+    }
+}

@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -49,6 +50,12 @@ public:
 
     int integer(const pugi::xml_node& n, const char* name) {
         const double v = num(n, name, 0.0);
+        // A value no int holds is reported, not converted: the conversion
+        // would be undefined (found by fuzz_xodr_reader with id="-2e109").
+        if (!(std::abs(v) <= static_cast<double>(std::numeric_limits<int>::max()))) {
+            bad(n, name, "is out of range: '" + std::string{n.attribute(name).value()} + "'");
+            return 0;
+        }
         if (v != std::floor(v)) {
             bad(n, name, "is not an integer");
         }
