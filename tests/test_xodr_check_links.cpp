@@ -217,3 +217,16 @@ TEST(XodrCheckLinks, LaneLinkBeyondIntRangeIsAFindingNotAConversion) {
         EXPECT_NE(f.check, "attribute") << listing(ok);
     }
 }
+
+// The header's revision numbers the same way (revMinor of 58 eights, found by
+// fuzz_xodr_reader after the lane link's fix).
+TEST(XodrCheckLinks, HeaderRevisionBeyondIntRangeIsAFinding) {
+    std::string doc = document(road_xml(arc_road("")));
+    doc.replace(doc.find("revMinor=\"7\""), 12, "revMinor=\"" + std::string(58, '8') + "\"");
+    const auto r = xc::check_text(doc, "rev.xodr");
+    bool named = false;
+    for (const auto& f : r.findings) {
+        named = named || (f.check == "attribute" && f.message.find("@revMinor is out of range") != std::string::npos);
+    }
+    EXPECT_TRUE(named) << listing(r);
+}

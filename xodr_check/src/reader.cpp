@@ -48,13 +48,13 @@ public:
         return v;
     }
 
-    int integer(const pugi::xml_node& n, const char* name) {
-        const double v = num(n, name, 0.0);
+    int integer(const pugi::xml_node& n, const char* name, int fallback = 0, bool required = true) {
+        const double v = num(n, name, fallback, required);
         // A value no int holds is reported, not converted: the conversion
         // would be undefined (found by fuzz_xodr_reader with id="-2e109").
         if (!(std::abs(v) <= static_cast<double>(std::numeric_limits<int>::max()))) {
             bad(n, name, "is out of range: '" + std::string{n.attribute(name).value()} + "'");
-            return 0;
+            return fallback;
         }
         if (v != std::floor(v)) {
             bad(n, name, "is not an integer");
@@ -297,8 +297,8 @@ Document read_document(const std::string& xml, const std::string& name) {
     if (!header) {
         doc.findings.push_back({Severity::error, "file", name, nan, "header", "<header> is missing"});
     }
-    doc.rev_major = static_cast<int>(r.num(header, "revMajor", 1.0, bool(header)));
-    doc.rev_minor = static_cast<int>(r.num(header, "revMinor", 0.0, bool(header)));
+    doc.rev_major = r.integer(header, "revMajor", 1, bool(header));
+    doc.rev_minor = r.integer(header, "revMinor", 0, bool(header));
     doc.geo_reference = header.child("geoReference").child_value();
     for (const auto n : root.children("road")) {
         doc.roads.push_back(read_road(r, n));
