@@ -34,17 +34,6 @@ inline std::filesystem::path as_file(const std::string& name, const std::uint8_t
     return p;
 }
 
-// Runs f; railodd's documented errors are fine.
-template <class F>
-void expect_clean(F&& f) {
-    try {
-        f();
-    } catch (const railodd::InputError&) {
-    } catch (const railodd::UsageError&) {
-    } catch (const std::invalid_argument&) {
-    }
-}
-
 // Runs a whole command: only the errors main() maps to a documented exit
 // code (usage, input) are fine; std::invalid_argument escaping a command is an
 // internal error there, so it is a finding here.
@@ -55,6 +44,18 @@ void expect_exit_code(F&& f) {
     } catch (const railodd::InputError&) {
     } catch (const railodd::UsageError&) {
     }
+}
+
+// Runs a loader: besides those, std::invalid_argument naming the problem is
+// its documented error.
+template <class F>
+void expect_clean(F&& f) {
+    expect_exit_code([&] {
+        try {
+            f();
+        } catch (const std::invalid_argument&) {
+        }
+    });
 }
 
 } // namespace railodd::fuzz

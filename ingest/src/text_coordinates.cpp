@@ -74,7 +74,6 @@ public:
         }
         on_ = false;
     }
-    bool on() const noexcept { return on_; }
     void newline() noexcept { ++line_; }
 
 private:
