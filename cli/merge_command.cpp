@@ -57,10 +57,14 @@ json read_json(const fs::path& path, const std::set<std::string>& keep = {}) {
     return j;
 }
 
-void require_format(const json& j, const fs::path& path, const char* format) {
+// `newest`: the highest format_version read (merge reads the parts that all versions share).
+void require_format(const json& j, const fs::path& path, const char* format, int newest = 1) {
     const json& r = j.contains("railodd") ? j["railodd"] : json{};
-    if (!r.is_object() || r.value("format", "") != format || r.value("format_version", 0) != 1) {
-        throw InputError(path.string(), std::string{"not a "} + format + " file of format_version 1");
+    const json version = r.is_object() && r.contains("format_version") ? r["format_version"] : json{};
+    if (!r.is_object() || r.value("format", "") != format || !version.is_number_integer() ||
+        version.get<long long>() < 1 || version.get<long long>() > newest) {
+        throw InputError(path.string(), std::string{"not a "} + format + " file of format_version 1" +
+                                            (newest > 1 ? " to " + std::to_string(newest) : std::string{}));
     }
 }
 
@@ -235,7 +239,7 @@ json merge_profiles(const fs::path& root, const std::vector<std::string>& ids) {
         const fs::path p = root / id / "odd_profile.json";
         reading_json(p, [&] {
             const json j = read_json(p, {"railodd", "summary"});
-            require_format(j, p, "odd_profile");
+            require_format(j, p, "odd_profile", 2);
             if (!j.contains("summary") || !j["summary"].is_object()) {
                 throw InputError(p.string(), "no summary object");
             }

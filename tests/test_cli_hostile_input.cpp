@@ -210,9 +210,12 @@ TEST_F(CliHostileInput, OddProfileWithWrongTypesOrHugeNumbers) {
         {R"("length_m":)", R"("length_m": "long", "x":)"},
         {R"("length_m":)", R"("length_m": 1e999, "x":)"},
         {R"("elements": [)", R"("elements": {"a": 1}, "y": [)"},
-        {R"("road_id":)", R"("road_id": 12, "x":)"},
-        {R"("s_start":)", R"("s_start": [], "x":)"},
-        {R"("track":)", R"("track": "one", "x":)"},
+        {R"("element_kinds": [)", R"("element_kinds": 5, "k": [)"},
+        {R"("element_columns": [)", R"("element_columns": ["kind"], "c": [)"},
+        {"\"elements\": [\n  [0,", "\"elements\": [\n  [99999,"}, // no such kind
+        {"\"elements\": [\n  [0,0,", "\"elements\": [\n  [0,\"one\","},     // the track
+        {"\"elements\": [\n  [0,0,\"", "\"elements\": [\n  [0,0,12,\"x"}, // the road id
+        {"\"elements\": [\n  [0,0,\"", "\"elements\": [\n  [0,0,\"1\",[],\""}, // s_start
         {R"("summary":)", R"("summary": [1, 2], "x":)"},
         {R"("taxonomy": {)", R"("taxonomy": 7, "t": {)"},
     };

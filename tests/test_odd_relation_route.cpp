@@ -6,6 +6,7 @@
 // from the selection is a gap listed in report.json, and a relation without
 // track members is refused naming it. Then the sample route's relation.
 #include "railodd/util/errors.hpp"
+#include "odd_profile_rows.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -49,7 +50,7 @@ Converted convert(const fs::path& input, const fs::path& out, const std::string&
                         " " + options);
     if (c.run.exit_code == 0) {
         c.report = nlohmann::json::parse(read_file(out / "report.json"));
-        c.profile = nlohmann::json::parse(read_file(out / "odd_profile.json"));
+        c.profile = with_element_objects(nlohmann::json::parse(read_file(out / "odd_profile.json")));
     }
     return c;
 }

@@ -15,6 +15,7 @@
 #include "railodd/util/errors.hpp"
 #include "railodd/xodr/map_builder.hpp"
 #include "railodd/xodr/xml_writer.hpp"
+#include "odd_profile_rows.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -260,7 +261,7 @@ TEST(OddRoute, ConvertFromToWritesTheRoute) {
             EXPECT_TRUE(p.contains(key)) << key;
         }
     }
-    const auto profile = nlohmann::json::parse(read_file(dir / "out" / "odd_profile.json"));
+    const auto profile = with_element_objects(nlohmann::json::parse(read_file(dir / "out" / "odd_profile.json")));
     EXPECT_EQ(profile["route"]["description"], "Sampleton -> Brookside");
     EXPECT_FALSE(profile["elements"].empty());
     for (const auto& e : profile["elements"]) {

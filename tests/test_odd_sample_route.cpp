@@ -5,6 +5,7 @@
 // map.xodr's userData.
 #include "railodd/geometry/alignment.hpp"
 #include "railodd/ingest/projection.hpp"
+#include "odd_profile_rows.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -35,7 +36,7 @@ const Converted& run() {
         }
         x.truth = nlohmann::json::parse(read_file(dir / "in" / "sample_route_truth.json"));
         x.report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
-        x.profile = nlohmann::json::parse(read_file(dir / "out" / "odd_profile.json"));
+        x.profile = with_element_objects(nlohmann::json::parse(read_file(dir / "out" / "odd_profile.json")));
         x.geojson = nlohmann::json::parse(read_file(dir / "out" / "odd_profile.geojson"));
         x.xodr = read_file(dir / "out" / "map.xodr");
         return x;

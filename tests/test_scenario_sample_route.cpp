@@ -2,6 +2,7 @@
 // `railodd convert`: every file valid against the OpenSCENARIO 1.2 schema,
 // every road, lane and s it names present in the map, anchors that satisfy
 // their templates, full pairwise coverage, determinism and clean failures.
+#include "odd_profile_rows.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -187,7 +188,7 @@ TEST_F(ScenarioSampleRoute, AnchorsSatisfyTheirTemplates) {
     const fs::path out = root() / "anchors";
     ASSERT_EQ(scenarios(out).exit_code, 0);
     const json m = read_json(out / "manifest.json");
-    const json profile = read_json(map() / "odd_profile.json");
+    const json profile = with_element_objects(read_json(map() / "odd_profile.json"));
     std::map<std::string, std::size_t> per_template;
     for (const auto& s : m["scenarios"]) {
         const std::string t = s["template"];

@@ -1,15 +1,19 @@
 // odd_profile.json: writing and reading the route's ODD profile (profile.hpp
-// holds the format). Keys are written in a fixed order (ordered_json) and
-// elements in the profile's order, so that two runs give identical files.
-// `lonlat` is not part of the JSON: the geometry lives in odd_profile.geojson.
+// holds the format, profile_elements.cpp the elements' rows). Keys are
+// written in a fixed order (ordered_json) and elements in the profile's
+// order, so that two runs give identical files. `lonlat` is not part of the
+// JSON: the geometry lives in odd_profile.geojson.
 #include "railodd/odd/profile.hpp"
 
-#include "json_text.hpp"
+#include "json_read.hpp"
+#include "profile_elements.hpp"
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/input_file.hpp"
 
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -20,147 +24,11 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-// Bumped when a key changes meaning; readers refuse nothing yet (one version).
-constexpr int format_version = 1;
-
-ojson attribute_json(const AttributeValue& value) {
-    return std::visit([](const auto& v) { return ojson(v); }, value);
-}
-
-ojson element_json(const TaggedElement& e) {
-    ojson attrs = ojson::object();
-    for (const auto& a : e.attributes) {
-        attrs[a.name] = attribute_json(a.value);
-    }
-    ojson j;
-    j["odd_element"] = e.element;
-    j["id"] = e.element_id;
-    j["attributes"] = std::move(attrs);
-    j["road_id"] = e.road_id;
-    j["s_start"] = e.s_start;
-    j["s_end"] = e.s_end;
-    j["track"] = e.track;
-    j["chainage_start"] = e.chainage_start;
-    j["chainage_end"] = e.chainage_end;
-    j["point"] = e.point;
-    j["osm_ids"] = e.osm_ids;
-    j["source"] = e.source;
-    if (e.reversed) {
-        j["reversed"] = true;
-    }
-    return j;
-}
-
-// element_json(e).dump(), printed directly (json_text.hpp).
-void append_element(std::string& out, const TaggedElement& e) {
-    out += R"({"odd_element":)";
-    json_text::string(out, e.element);
-    out += R"(,"id":)";
-    json_text::string(out, e.element_id);
-    out += R"(,"attributes":)";
-    json_text::attributes(out, e.attributes);
-    out += R"(,"road_id":)";
-    json_text::string(out, e.road_id);
-    out += R"(,"s_start":)";
-    json_text::number(out, e.s_start);
-    out += R"(,"s_end":)";
-    json_text::number(out, e.s_end);
-    out += R"(,"track":)";
-    json_text::number(out, static_cast<unsigned long long>(e.track));
-    out += R"(,"chainage_start":)";
-    json_text::number(out, e.chainage_start);
-    out += R"(,"chainage_end":)";
-    json_text::number(out, e.chainage_end);
-    out += e.point ? R"(,"point":true,"osm_ids":[)" : R"(,"point":false,"osm_ids":[)";
-    for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {
-        out += i > 0 ? "," : "";
-        json_text::string(out, e.osm_ids[i]);
-    }
-    out += R"(],"source":)";
-    json_text::string(out, e.source);
-    out += e.reversed ? R"(,"reversed":true})" : "}";
-}
-
-// --- reading ---------------------------------------------------------------
-// Every lookup names the key and where it was expected, so that a hand-edited
-// file that lost a key is reported as "elements[3].s_start: missing".
-
-template <class Json>
-const Json& required(const Json& j, const std::string& key, const std::string& where) {
-    if (!j.is_object()) {
-        throw std::invalid_argument(where + ": expected an object");
-    }
-    const auto it = j.find(key);
-    if (it == j.end()) {
-        throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": missing");
-    }
-    return *it;
-}
-
-template <class T, class Json>
-T get(const Json& j, const std::string& key, const std::string& where) {
-    const auto& v = required(j, key, where);
-    if constexpr (std::is_same_v<T, std::size_t>) {
-        // nlohmann would wrap -1 to 2^64-1 and cut 1.5 to 1: an index must be exact.
-        if (!v.is_number_unsigned()) {
-            throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": expected a count, not " + v.dump());
-        }
-    }
-    try {
-        return v.template get<T>();
-    } catch (const nlohmann::json::exception&) { // shared by both specialisations
-        throw std::invalid_argument((where.empty() ? key : where + "." + key) + ": wrong type (" + v.type_name() + ")");
-    }
-}
-
-template <class T, class Json>
-T get_or(const Json& j, const std::string& key, const std::string& where, T fallback) {
-    if (!j.is_object()) {
-        throw std::invalid_argument((where.empty() ? "document" : where) + ": expected an object");
-    }
-    return j.contains(key) ? get<T>(j, key, where) : fallback;
-}
-
-template <class Json>
-AttributeValue attribute_value(const Json& v, const std::string& where) {
-    if (v.is_boolean()) {
-        return v.template get<bool>();
-    }
-    if (v.is_number()) {
-        return v.template get<double>();
-    }
-    if (v.is_string()) {
-        return v.template get<std::string>();
-    }
-    throw std::invalid_argument(where + ": expected a number, string or bool (" + v.type_name() + ")");
-}
-
-template <class Json>
-TaggedElement element_from_json(const Json& j, const std::string& where) {
-    TaggedElement e;
-    e.element = get<std::string>(j, "odd_element", where);
-    e.element_id = get_or<std::string>(j, "id", where, "");
-    if (j.contains("attributes")) {
-        const auto& attrs = required(j, "attributes", where);
-        if (!attrs.is_object()) {
-            throw std::invalid_argument(where + ".attributes: expected an object");
-        }
-        for (const auto& [name, value] : attrs.items()) {
-            e.attributes.push_back({name, attribute_value(value, where + ".attributes." + name)});
-        }
-    }
-    e.road_id = get<std::string>(j, "road_id", where);
-    e.s_start = get<double>(j, "s_start", where);
-    e.s_end = get<double>(j, "s_end", where);
-    e.track = get_or<std::size_t>(j, "track", where, 0);
-    e.chainage_start = get_or<double>(j, "chainage_start", where, e.s_start);
-    e.chainage_end = get_or<double>(j, "chainage_end", where, e.s_end);
-    e.point = get_or<bool>(j, "point", where, false);
-    e.osm_ids = get_or<std::vector<std::string>>(j, "osm_ids", where, {});
-    e.source = get_or<std::string>(j, "source", where, "");
-    e.reversed = get_or<bool>(j, "reversed", where, false);
-    return e;
-}
+// Bumped when a key changes meaning. 2: elements as rows of a table; 1
+// (still read): one object per element.
+constexpr int format_version = 2;
+namespace rows = profile_elements;
+using namespace json_read;
 
 } // namespace
 
@@ -206,7 +74,10 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
     j["taxonomy"] = {{"name", profile.taxonomy_name},
                      {"version", profile.taxonomy_version},
                      {"file", profile.taxonomy_file}};
-    j["route"] = {{"description", profile.route}, {"length_m", profile.length_m}, {"tracks", profile.tracks}};
+    // The length to the millimetre too: the largest chainage of a route, rounded, stays within it.
+    j["route"] = {{"description", profile.route},
+                  {"length_m", rows::metres(profile.length_m)},
+                  {"tracks", profile.tracks}};
     if (profile.along_route) {
         j["route"]["along_route"] = true;
     }
@@ -217,9 +88,16 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
         }
         j["track_ends"] = std::move(ends);
     }
+    const rows::Kinds kinds = rows::kinds_of(profile.elements);
+    ojson kind_list = ojson::array();
+    for (const auto& [path, id] : kinds.list) {
+        kind_list.push_back({path, id});
+    }
+    j["element_kinds"] = std::move(kind_list);
+    j["element_columns"] = rows::columns();
     ojson elements = ojson::array();
-    for (const auto& e : profile.elements) {
-        elements.push_back(element_json(e));
+    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
+        elements.push_back(rows::row_json(profile.elements[i], kinds.of[i]));
     }
     j["elements"] = std::move(elements);
     ojson unparsed = ojson::array();
@@ -251,11 +129,18 @@ void write_json(const OddProfile& profile, std::ostream& out) {
         }
         out << " ],\n";
     }
+    const rows::Kinds kinds = rows::kinds_of(profile.elements);
+    out << " \"element_kinds\": [\n";
+    for (std::size_t i = 0; i < kinds.list.size(); ++i) {
+        out << "  " << ojson::array({kinds.list[i].first, kinds.list[i].second}).dump()
+            << (i + 1 < kinds.list.size() ? ",\n" : "\n");
+    }
+    out << " ],\n \"element_columns\": " << ojson(rows::columns()).dump() << ",\n";
     out << " \"elements\": [\n";
     std::string line;
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
         line.assign("  ");
-        append_element(line, profile.elements[i]);
+        rows::append_row(line, profile.elements[i], kinds.of[i]);
         line += i + 1 < profile.elements.size() ? ",\n" : "\n";
         out << line;
     }
@@ -276,8 +161,29 @@ std::string to_json_text(const OddProfile& profile) {
 
 namespace {
 
+// 1 for a file without the "railodd" header (written before it had one).
 template <class Json>
-OddProfile profile_from(const Json& j) {
+int format_of(const Json& j) {
+    if (!j.is_object() || !j.contains("railodd")) {
+        return 1;
+    }
+    const auto& head = j["railodd"];
+    if (get_or<std::string>(head, "format", "railodd", "odd_profile") != "odd_profile") {
+        throw std::invalid_argument("railodd.format: expected \"odd_profile\", not " + head["format"].dump());
+    }
+    const auto& version = head.contains("format_version") ? head["format_version"] : Json(1);
+    if (!version.is_number_integer() || version.template get<long long>() < 1 ||
+        version.template get<long long>() > format_version) {
+        throw std::invalid_argument("railodd.format_version: " + version.dump() +
+                                    " is not a format this railodd reads (1 to " + std::to_string(format_version) + ")");
+    }
+    return static_cast<int>(version.template get<long long>());
+}
+
+// `streamed`: the elements read_profile took from the rows as they were
+// parsed (the tree's "elements" is then empty).
+template <class Json>
+OddProfile profile_from(const Json& j, std::deque<TaggedElement>* streamed = nullptr) {
     OddProfile p;
     const auto& taxonomy = required(j, "taxonomy", "");
     p.taxonomy_name = get_or<std::string>(taxonomy, "name", "taxonomy", "");
@@ -291,12 +197,11 @@ OddProfile profile_from(const Json& j) {
     if (j.contains("track_ends")) {
         p.track_ends = track_ends_from(j["track_ends"]);
     }
-    const auto& elements = required(j, "elements", "");
-    if (!elements.is_array()) {
-        throw std::invalid_argument("elements: expected an array");
-    }
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-        p.elements.push_back(element_from_json(elements[i], "elements[" + std::to_string(i) + "]"));
+    const int format = format_of(j);
+    if (streamed) {
+        p.elements = std::move(*streamed);
+    } else {
+        p.elements = format == 1 ? rows::from_objects(j) : rows::from_rows(j);
     }
     if (j.contains("unparsed")) {
         const auto& unparsed = j["unparsed"];
@@ -326,18 +231,83 @@ OddProfile profile_from_json(const nlohmann::json& j) { return profile_from(j); 
 
 OddProfile profile_from_json(const nlohmann::ordered_json& j) { return profile_from(j); }
 
+namespace {
+
+// read_profile's parser callback: each element becomes a TaggedElement as
+// soon as the parser completes it and is dropped from the tree, so that a
+// whole network's profile (170,000 elements on Cologne) never exists as one
+// JSON tree. Only where the header, kinds and columns come before the
+// elements, as railodd writes them; otherwise the tree is kept whole and read
+// as profile_from_json reads it.
+class ElementStream {
+public:
+    bool operator()(int depth, nlohmann::json::parse_event_t event, ojson& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        if (depth == 1 && event == Event::key) {
+            key_ = parsed.template get<std::string>();
+            if (key_ == "elements") {
+                streaming_ = ready();
+                elements_.clear(); // a repeated key: the last one counts, as in the tree
+                index_ = 0;
+            }
+            return true;
+        }
+        const bool done = event == Event::value || event == Event::object_end || event == Event::array_end;
+        if (done && depth == 1 && key_ != "elements") {
+            remember(parsed);
+            return true;
+        }
+        if (done && depth == 2 && key_ == "elements" && streaming_) {
+            const std::string where = "elements[" + std::to_string(index_++) + "]";
+            elements_.push_back(*format_ == 1 ? rows::from_object(parsed, where)
+                                              : rows::from_row(parsed, *kinds_, where));
+            return false;
+        }
+        return true;
+    }
+
+    std::deque<TaggedElement>* streamed() { return streaming_ ? &elements_ : nullptr; }
+
+private:
+    void remember(const ojson& value) {
+        try { // a malformed header, kinds or columns: not streamed, and refused by profile_from
+            if (key_ == "railodd") {
+                format_ = format_of(ojson{{"railodd", value}});
+            } else if (key_ == "element_kinds") {
+                kinds_ = rows::kinds_from(value);
+            } else if (key_ == "element_columns") {
+                rows::check_columns(value);
+                columns_ok_ = true;
+            }
+        } catch (const std::invalid_argument&) {
+            format_.reset();
+        }
+    }
+
+    bool ready() const { return format_ && (*format_ == 1 || (kinds_ && columns_ok_)); }
+
+    std::string key_;
+    std::optional<int> format_;
+    std::optional<rows::KindList> kinds_;
+    bool columns_ok_ = false;
+    bool streaming_ = false;
+    std::size_t index_ = 0;
+    std::deque<TaggedElement> elements_;
+};
+
+} // namespace
+
 OddProfile read_profile(const std::filesystem::path& file) {
     const std::string text = read_input_file(file, "ODD profile");
     // Parsed keeping key order: attributes and the summary's classes stay in
     // the order the tagger wrote them (the taxonomy's bin order).
+    ElementStream stream;
     nlohmann::ordered_json j;
     try {
-        j = nlohmann::ordered_json::parse(text);
+        j = nlohmann::ordered_json::parse(text, std::ref(stream));
+        return profile_from(j, stream.streamed());
     } catch (const nlohmann::json::exception& e) { // parse errors, and out_of_range for 1e999
         throw InputError(file.string(), std::string{"invalid JSON: "} + e.what());
-    }
-    try {
-        return profile_from_json(j);
     } catch (const std::invalid_argument& e) {
         throw InputError(file.string(), std::string{"not an ODD profile: "} + e.what());
     }

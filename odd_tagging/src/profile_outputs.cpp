@@ -2,6 +2,7 @@
 #include "railodd/odd/profile_outputs.hpp"
 
 #include "json_text.hpp"
+#include "profile_elements.hpp"
 #include "text.hpp"
 
 #include <charconv>
@@ -66,7 +67,7 @@ void append_feature(std::string& out, const TaggedElement& e) {
                                                       {R"(,"chainage_end":)", e.chainage_end}};
     for (const auto& [key, value] : numbers) {
         out += key;
-        json_text::number(out, value);
+        json_text::number(out, profile_elements::metres(value)); // to the millimetre, as in odd_profile.json
     }
     out += R"(,"osm_ids":[)";
     for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {

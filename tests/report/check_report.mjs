@@ -69,15 +69,30 @@ function xodrRailRoads(xml) {
   return ids;
 }
 
+// odd_profile.json's elements (format 2: rows of element_columns, the kind
+// an index into element_kinds, a null chainage equal to the s beside it) as
+// objects, read from the documented format rather than from the page.
+function profileElements(profile) {
+  if (!profile.element_columns) return profile.elements; // format 1
+  return profile.elements.map((row) => {
+    const e = Object.fromEntries(profile.element_columns.map((c, i) => [c, row[i]]));
+    [e.odd_element, e.id] = profile.element_kinds[e.kind];
+    e.chainage_start ??= e.s_start;
+    e.chainage_end ??= e.s_end;
+    return e;
+  });
+}
+
 function expectations(opts) {
   const dir = resolve(opts.map);
   const report = JSON.parse(readFileSync(dir + '/report.json', 'utf8'));
   const profile = JSON.parse(readFileSync(dir + '/odd_profile.json', 'utf8'));
+  const elements = profileElements(profile);
   const xodrRail = xodrRailRoads(readFileSync(dir + '/map.xodr', 'utf8'));
   // Track lengths from the profile (the largest chainage any element of a track reaches),
   // for a default chain that is not every track end to end.
   const trackLength = new Map();
-  for (const e of profile.elements) {
+  for (const e of elements) {
     const c = Math.max(e.chainage_start, e.chainage_end);
     if (!(trackLength.get(e.track) >= c)) trackLength.set(e.track, c);
   }
@@ -88,7 +103,7 @@ function expectations(opts) {
     xodrRailRoads: xodrRail.length,
     xodrRailIds: xodrRail,
     length: profile.route.length_m,
-    levelCrossings: profile.elements.filter((e) => e.id === 'sc.xing.level').length,
+    levelCrossings: elements.filter((e) => e.id === 'sc.xing.level').length,
     scenarios: null,
   };
   if (opts.scenarios) {

@@ -4,16 +4,20 @@
 // Written by `railodd convert` as odd_profile.json / .geojson / .csv and read
 // back by `railodd profile` (docs/odd.md, "Profile").
 //
-// odd_profile.json:
-//   {"railodd": {...}, "taxonomy": {"name", "version", "file"},
+// odd_profile.json (format_version 2; format 1, one object per element, is still read):
+//   {"railodd": {"format": "odd_profile", "format_version": 2}, "taxonomy": {"name", "version", "file"},
 //    "route": {"description", "length_m", "tracks", "along_route" (only when true)},
 //    "track_ends": [[TRACK, FROM-NODE, TO-NODE, FROM-HEADING, TO-HEADING], ...] (whole networks),
-//    "elements": [{"odd_element": PATH, "id": TAXONOMY-ID, "attributes": {NAME: number|string|bool, ...},
-//                  "road_id": "12", "s_start": m, "s_end": m, "track": EDGE, "chainage_start": m,
-//                  "chainage_end": m, "point": bool, "osm_ids": ["way:1", "node:2"],
-//                  "source": "osm"|"derived"|"dem"|"osm+derived", "reversed": true (only when)}, ...],
+//    "element_kinds": [[PATH, TAXONOMY-ID], ...] (in order of first use),
+//    "element_columns": ["kind", "track", "road_id", "s_start", "s_end", "chainage_start",
+//                        "chainage_end", "source", "osm_ids", "attributes", "flags"],
+//    "elements": [[KIND, EDGE, "12", m, m, m|null, m|null, "osm"|"derived"|"dem"|"osm+derived",
+//                  ["way:1", "node:2"], {NAME: number|string|bool, ...}, ["point", "reversed"]], ...],
 //    "unparsed": [{"osm_ids", "tag", "value", "reason"}],
 //    "summary": {...}}
+// KIND indexes element_kinds; positions are metres to the millimetre; a null
+// chainage equals the s beside it; "flags" (only where one is set) lists
+// "point" and "reversed" (s falls as chainage grows).
 // s is along the OpenDRIVE road `road_id`; chainage along the route (the track
 // graph edge `track`'s fitted centreline when no route is chosen).
 #include <cstddef>
