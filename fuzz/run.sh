@@ -11,7 +11,7 @@ shift || true
 harnesses=("$@")
 if [ ${#harnesses[@]} -eq 0 ]; then
   harnesses=(fuzz_tag_values fuzz_yaml_loaders fuzz_xodr_reader fuzz_polygon fuzz_osm_ingest fuzz_field_mapping
-             fuzz_routes_file fuzz_convert)
+             fuzz_routes_file fuzz_convert fuzz_profile_json)
 fi
 b=build-san
 bash scripts/build_san.sh "${harnesses[@]}"
@@ -72,6 +72,11 @@ printf 'defaults:\n  estimate_cant: true\n  scenarios: {strategy: pairwise, coun
 seed fuzz_routes_file "$seeds/routes.yaml"
 printf '<OpenDRIVE><header revMajor="1" revMinor="7"/><road id="1" length="10" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView></road></OpenDRIVE>' >"$seeds/tiny.xodr"
 seed fuzz_xodr_reader "$seeds/tiny.xodr"
+if [ -f "$seeds/map/odd_profile.json" ]; then # the sample route's profile (format 2); a format 1 one below
+  seed fuzz_profile_json "$seeds/map/odd_profile.json"
+fi
+printf '{"railodd":{"format":"odd_profile","format_version":1},"taxonomy":{"name":"t"},"route":{"length_m":10},"elements":[{"odd_element":"A/B","id":"a.b","attributes":{"x":1.5,"y":"z","w":true},"road_id":"1","s_start":0,"s_end":10,"track":0,"chainage_start":0,"chainage_end":10,"point":false,"osm_ids":["way:1"],"source":"osm","reversed":true}],"unparsed":[],"summary":{}}' >"$seeds/profile_v1.json"
+seed fuzz_profile_json "$seeds/profile_v1.json"
 # Every input a harness once failed on (fuzz/regressions/HARNESS/), fixed since:
 # seeded, so a regression is met in the first seconds of a run.
 for dir in fuzz/regressions/*/; do

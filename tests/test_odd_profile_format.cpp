@@ -181,6 +181,17 @@ TEST(OddProfileFormat, StreamedReadingEqualsTheTreeInAnyKeyOrder) {
         const OddProfile q = read_profile(write_file(dir / name, body));
         EXPECT_EQ(to_json_text(q), to_json_text(tree));
     }
+    // Kinds given again after the rows were read with the first ones: refused,
+    // not read two ways (the tree would keep the last).
+    std::string twice = text;
+    twice.insert(twice.rfind('}'), R"(, "element_kinds": [["A/B", "a.b"]])");
+    try {
+        read_profile(write_file(dir / "twice.json", twice));
+        ADD_FAILURE() << "accepted";
+    } catch (const railodd::InputError& e) {
+        EXPECT_NE(std::string{e.what()}.find("element_kinds: given again after the elements"), std::string::npos)
+            << e.what();
+    }
     // Errors in a streamed row still name the element, the column and the file.
     doc["elements"][5][4] = "far";
     const auto bad = write_file(dir / "bad.json", doc.dump());

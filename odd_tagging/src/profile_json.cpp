@@ -245,6 +245,10 @@ public:
         using Event = nlohmann::json::parse_event_t;
         if (depth == 1 && event == Event::key) {
             key_ = parsed.template get<std::string>();
+            if (streaming_ && (key_ == "railodd" || key_ == "element_kinds" || key_ == "element_columns")) {
+                // The rows were read with the first one; the tree would take the last.
+                throw std::invalid_argument(key_ + ": given again after the elements");
+            }
             if (key_ == "elements") {
                 streaming_ = ready();
                 elements_.clear(); // a repeated key: the last one counts, as in the tree
