@@ -34,6 +34,8 @@ constexpr Key convert_keys[] = {
     {"feature_distance", "--feature-distance", Kind::number},
     {"station_distance", "--station-distance", Kind::number},
     {"estimate_cant", "--estimate-cant", Kind::flag},
+    {"debug_outputs", "--debug-outputs", Kind::flag},
+    {"odd_user_data", "--odd-user-data", Kind::flag},
     {"odr_version", "--odr-version", Kind::text},
     {"taxonomy", "--taxonomy", Kind::path},
     {"from", "--from", Kind::text},
@@ -50,7 +52,8 @@ constexpr Key scenario_keys[] = {
 
 const std::initializer_list<std::string_view> route_keys = {
     "id", "input", "scenarios", "bbox", "polygon", "relation", "field_mapping", "dem", "road_corridor",
-    "node_noise", "feature_distance", "station_distance", "estimate_cant", "odr_version", "taxonomy", "from", "to"};
+    "node_noise", "feature_distance", "station_distance", "estimate_cant", "debug_outputs", "odd_user_data",
+    "odr_version", "taxonomy", "from", "to"};
 const std::initializer_list<std::string_view> scenario_key_names = {
     "strategy", "count", "seed", "templates", "catalog", "max_anchors", "odd_spec", "osc_version"};
 

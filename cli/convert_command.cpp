@@ -86,6 +86,9 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
     app->add_flag("--debug-outputs", opt_.debug_outputs,
                   "Also write ingest.geojson (the selected input), geometry.geojson and roads.geojson (the fitted "
                   "centrelines in WGS84): diagnostics; `railodd report` reads the mapped nodes from ingest.geojson");
+    app->add_flag("--odd-user-data", opt_.odd_user_data,
+                  "Also write every ODD profile element as a <userData code=\"odd\"> on its road in map.xodr "
+                  "(odd_profile.json holds them all, with road_id and s; on a network they are a third of the map)");
     return app;
 }
 
@@ -385,7 +388,9 @@ int ConvertCommand::run() {
     timer.start("odd_tagging");
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
     const odd::OddProfile network = odd::tag_route({map_input, map}, taxonomy);
-    const odd::OddUserData odd_user_data(network); // the whole network's, written with each road
+    // The whole network's elements, written with each road, when asked for.
+    const std::optional<odd::OddUserData> odd_user_data =
+        opt_.odd_user_data ? std::optional<odd::OddUserData>(std::in_place, network) : std::nullopt;
     odd::OddProfile along;
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
     const odd::OddProfile& profile = route ? along : network;
@@ -404,7 +409,10 @@ int ConvertCommand::run() {
             stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
             stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
         });
-    stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out, odd_user_data); });
+    stage.write_with("map.xodr", [&](std::ostream& out) {
+        xodr::write_xodr(map.map, mo.revision, out,
+                         odd_user_data ? xodr::ExtraUserData(std::cref(*odd_user_data)) : xodr::ExtraUserData{});
+    });
     write_debug_outputs(stage, opt_.debug_outputs, result, geo);
     profile_written.get();
     timer.stop();

@@ -28,6 +28,7 @@ struct ConvertOptions {
     bool no_timings = false;
     bool no_report = false; // report.html not written
     bool debug_outputs = false; // ingest.geojson, geometry.geojson, roads.geojson written
+    bool odd_user_data = false; // every profile element also a <userData code="odd"> on its road in map.xodr
     bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
     std::string odr_version = "1.7";
     std::string taxonomy; // ODD taxonomy; empty: data/odd/railway_odd.yaml

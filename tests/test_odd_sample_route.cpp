@@ -186,8 +186,15 @@ TEST(OddSampleRoute, SwitchesSignalsAndSummary) {
     EXPECT_EQ(r.profile["unparsed"].size(), 0u);
 }
 
-TEST(OddSampleRoute, TagsAreInTheMapUserData) {
-    const std::string& x = run().xodr;
+// Only when asked for: otherwise odd_profile.json is where the elements are.
+TEST(OddSampleRoute, TagsAreInTheMapUserDataWhenAskedFor) {
+    EXPECT_EQ(run().xodr.find("code=\"odd\""), std::string::npos);
+    const fs::path dir = scratch_dir();
+    const auto c = run_command(std::string{RAILODD_BIN} + " sample -o " + quoted(dir / "in") + " && " +
+                               std::string{RAILODD_BIN} + " convert " + quoted(dir / "in" / "sample_route.osm") +
+                               " -o " + quoted(dir / "out") + " --no-timings --no-report --odd-user-data");
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    const std::string x = read_file(dir / "out" / "map.xodr");
     EXPECT_NE(x.find("<userData code=\"odd\" value=\"sc.geo.hz.curve s="), std::string::npos);
     EXPECT_NE(x.find("radius_class="), std::string::npos);
 }
