@@ -49,6 +49,25 @@ TEST(IngestTextCoordinates, TheFuzzFindingIsRefusedNamingTheLineAndValue) {
     EXPECT_NE(p.find("exponent"), std::string::npos) << p;
 }
 
+// The second finding (CI's 60-second run): the same exponent followed by a
+// letter and 300 NUL bytes. libosmium scales the number before it finds the
+// trailing bytes, so a value too long to keep must still be checked.
+TEST(IngestTextCoordinates, TrailingBytesDoNotHideTheExponent) {
+    const auto dir = scratch_dir();
+    std::string text = "n1 v1 x199e999l";
+    text.append(300, '\0');
+    text += " y48.0\n";
+    const std::string p = refusal(write_file(dir / "trailing.opl", text));
+    EXPECT_NE(p.find("line 1"), std::string::npos) << p;
+    EXPECT_NE(p.find("x199e999l\\x00"), std::string::npos) << p;
+    EXPECT_NE(p.find("exponent"), std::string::npos) << p;
+    EXPECT_NE(refusal(write_file(dir / "trailing.osm", "<osm version=\"0.6\"><node id=\"1\" version=\"1\" "
+                                                       "lat=\"1e20x" + std::string(300, 'y') +
+                                                       "\" lon=\"10\"/></osm>\n"))
+                  .find("exponent"),
+              std::string::npos);
+}
+
 TEST(IngestTextCoordinates, LargeExponentsAreRefusedInEveryPlaceACoordinateIs) {
     const auto dir = scratch_dir();
     EXPECT_NE(refusal(write_file(dir / "lat.osm", xml("1e20"))).find("line 3: coordinate lat=\"1e20"), std::string::npos);

@@ -18,10 +18,35 @@ namespace railodd::ingest {
 namespace {
 
 constexpr double max_degrees = 1000.0;
-constexpr std::size_t max_value = 256; // longer values libosmium refuses itself (digit limits)
+constexpr std::size_t max_value = 256; // kept of a value: libosmium reads at most ~40 bytes of a number
+
+// The part of a coordinate that libosmium reads and scales: sign, digits,
+// fraction, exponent. What follows (a stray letter, NUL bytes) fails its
+// format check only after the scaling, so it must not hide the exponent.
+std::string_view numeric_prefix(std::string_view v) {
+    std::size_t i = 0;
+    auto digits = [&] {
+        while (i < v.size() && v[i] >= '0' && v[i] <= '9') {
+            ++i;
+        }
+    };
+    i += i < v.size() && (v[i] == '-' || v[i] == '+') ? 1 : 0;
+    digits();
+    if (i < v.size() && v[i] == '.') {
+        ++i;
+        digits();
+    }
+    if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
+        ++i;
+        i += i < v.size() && (v[i] == '-' || v[i] == '+') ? 1 : 0;
+        digits();
+    }
+    return v.substr(0, i);
+}
 
 // A value that libosmium would scale by its exponent past what an int64 holds.
 bool unsafe_exponent(std::string_view v) {
+    v = numeric_prefix(v);
     if (v.find_first_of("eE") == std::string_view::npos) {
         return false;
     }
@@ -66,7 +91,7 @@ public:
         }
     }
     void finish() {
-        if (on_ && value_.size() < max_value && unsafe_exponent(value_)) {
+        if (on_ && unsafe_exponent(value_)) { // the first max_value bytes hold all libosmium reads
             throw InputError(file_.string(), "line " + std::to_string(line_) + ": coordinate " + printable(label_ + value_ + close_) +
                                                  " has an exponent beyond any coordinate (over " +
                                                  std::to_string(static_cast<int>(max_degrees)) +
