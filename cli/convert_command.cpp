@@ -388,9 +388,10 @@ int ConvertCommand::run() {
     timer.start("odd_tagging");
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
     const odd::OddProfile network = odd::tag_route({map_input, map}, taxonomy);
-    // The whole network's elements, written with each road, when asked for.
-    const std::optional<odd::OddUserData> odd_user_data =
-        opt_.odd_user_data ? std::optional<odd::OddUserData>(std::in_place, network) : std::nullopt;
+    xodr::ExtraUserData odd_user_data; // the whole network's elements with each road, when asked for
+    if (opt_.odd_user_data) {
+        odd_user_data = odd::OddUserData(network);
+    }
     odd::OddProfile along;
     const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
     const odd::OddProfile& profile = route ? along : network;
@@ -409,10 +410,7 @@ int ConvertCommand::run() {
             stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
             stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
         });
-    stage.write_with("map.xodr", [&](std::ostream& out) {
-        xodr::write_xodr(map.map, mo.revision, out,
-                         odd_user_data ? xodr::ExtraUserData(std::cref(*odd_user_data)) : xodr::ExtraUserData{});
-    });
+    stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out, odd_user_data); });
     write_debug_outputs(stage, opt_.debug_outputs, result, geo);
     profile_written.get();
     timer.stop();
