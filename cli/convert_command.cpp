@@ -1,36 +1,25 @@
 #include "convert_command.hpp"
+#include "convert_outputs.hpp"
 #include "option_checks.hpp"
 
 #include "railodd/geometry/dump.hpp"
-#include "railodd/geometry/profiles.hpp"
-#include "railodd/geometry/topology_report.hpp"
 #include "railodd/geometry/road_fit.hpp"
-#include "railodd/geometry/track_fit.hpp"
+#include "railodd/geometry/topology_report.hpp"
 #include "railodd/ingest/dump.hpp"
 #include "railodd/ingest/ogr_reader.hpp"
-#include "railodd/ingest/osm_reader.hpp"
 #include "railodd/util/errors.hpp"
-#include "railodd/util/output_stage.hpp"
-#include "railodd/util/phase_timer.hpp"
-#include "railodd/xodr/map_builder.hpp"
-#include "railodd/xodr/xml_writer.hpp"
-#include "railodd/odd/profile_outputs.hpp"
-#include "railodd/odd/route.hpp"
-#include "railodd/odd/tagger.hpp"
-#include "railodd/odd/taxonomy.hpp"
-#include "railodd/report/report.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <chrono>
 #include <cstdlib>
-#include <ctime>
-#include <future>
-#include <optional>
 #include <filesystem>
+#include <iostream>
 #include <regex>
 #include <set>
-#include <iostream>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace railodd::cli {
 
@@ -192,20 +181,6 @@ void print_summary(const ingest::IngestResult& r, std::size_t in_map, const std:
 
 namespace {
 
-struct Geometry {
-    geometry::TrackGraph tracks;
-    geometry::FittedNetwork fitted_tracks;
-    std::vector<geometry::VerticalProfile> profiles;
-    std::vector<std::vector<geometry::CantStretch>> cants;
-    geometry::Attachment attachment;
-    geometry::Crossings crossings;
-    geometry::TrackGraph roads;
-    geometry::FittedNetwork fitted_roads;
-    // The fitted tracks indexed at 2 m: made to place the features, used
-    // again by the tagger, dropped before the outputs are written.
-    std::vector<geometry::IndexedAlignment> indexed;
-};
-
 // Crossings found on the graph; features placed on the fitted centrelines.
 void place_features(const ingest::IngestResult& r, Geometry& g, const ConvertOptions& o) {
     g.indexed.reserve(g.fitted_tracks.edges.size());
@@ -214,11 +189,6 @@ void place_features(const ingest::IngestResult& r, Geometry& g, const ConvertOpt
     }
     g.attachment = geometry::attach_features(g.tracks, g.indexed, r.features, o.feature_distance_m, o.station_distance_m);
     g.crossings = geometry::find_crossings(g.tracks, r.tracks, r.roads, r.features);
-}
-
-std::filesystem::path taxonomy_path(const std::string& option) {
-    return option.empty() ? std::filesystem::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml"
-                          : std::filesystem::path{option};
 }
 
 // The map's date: --date, else the data's own (the OSM file header's
@@ -239,6 +209,12 @@ Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::stri
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
     timer.start("fit_tracks");
     g.fitted_tracks = geometry::fit_track_graph(g.tracks, fo);
+#if defined(__GLIBC__)
+    // The fit's worker threads leave their malloc arenas' free pages
+    // resident, where this thread's later phases cannot reuse them: given
+    // back, Cologne's peak falls by the 18 MB they held.
+    malloc_trim(0);
+#endif
     timer.start("vertical_profiles");
     std::optional<geometry::ElevationModel> dem;
     if (!dem_files.empty()) {
@@ -250,22 +226,6 @@ Geometry fit_geometry(const ingest::IngestResult& r, const std::vector<std::stri
     g.fitted_roads = geometry::fit_road_graph(g.roads, geometry::RoadFitOptions{});
     timer.stop();
     return g;
-}
-
-// With --from/--to, the profile along the route between the two stations;
-// else with --relation, along the relation's member ways (the map stays the
-// whole selection); the route for report.json.
-std::optional<odd::Route> route_profile(const ConvertOptions& o, const ingest::IngestResult& r, const Geometry& g,
-                                        const odd::Taxonomy& taxonomy, const odd::OddProfile& network,
-                                        odd::OddProfile& along) {
-    if (o.from.empty() && !r.relation) {
-        return std::nullopt;
-    }
-    odd::Route route = o.from.empty()
-                           ? odd::relation_route(g.tracks, g.fitted_tracks, r.tracks, *r.relation, r.source)
-                           : odd::find_route(g.tracks, g.fitted_tracks, g.attachment, r.features, o.from, o.to);
-    along = odd::along_route(network, route, taxonomy);
-    return route;
 }
 
 } // namespace
@@ -303,51 +263,6 @@ nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const G
     return report;
 }
 
-// report.html from the map, profile, report and mapped tracks in memory: the
-// page is staged and committed with the files it shows.
-// Its time is the phase report_html of result.timings.
-void write_page(OutputStage& stage, const std::string& outdir, const odd::OddProfile& profile,
-                const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result) {
-    PhaseTimer timer;
-    timer.start("report_html");
-    std::vector<std::vector<std::array<double, 2>>> track_nodes;
-    for (const auto& way : result.tracks) {
-        for (const auto& part : way.parts) {
-            auto& line = track_nodes.emplace_back();
-            for (const auto& n : part) {
-                line.push_back({n.xy.x, n.xy.y});
-            }
-        }
-    }
-    report::ReportOptions o;
-    o.map_dir = stage.staged_path("map.xodr").parent_path();
-    o.map_name = outdir;
-    o.fallback_taxonomy = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
-    const report::PageData page = report::page_data(o, {&profile, &report, &map, &track_nodes});
-    stage.write_with("report.html", [&](std::ostream& out) { report::write_html(page, out); });
-    timer.stop();
-    result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
-}
-
-// The diagnostic GeoJSON files (the selected input; the fitted track and road
-// centrelines sampled back to WGS84), with --debug-outputs only. Without it,
-// any left by an earlier run go: they would describe another map.
-void write_debug_outputs(OutputStage& stage, bool wanted, const ingest::IngestResult& result, const Geometry& geo) {
-    if (!wanted) {
-        for (const char* name : {"ingest.geojson", "geometry.geojson", "roads.geojson"}) {
-            stage.remove_on_commit(name);
-        }
-        return;
-    }
-    stage.write_with("ingest.geojson", [&](std::ostream& out) { ingest::write_geojson(result, out); });
-    stage.write_with("geometry.geojson", [&](std::ostream& out) {
-        geometry::write_geojson(geo.tracks, geo.fitted_tracks, result.projection, "track", out);
-    });
-    stage.write_with("roads.geojson", [&](std::ostream& out) {
-        geometry::write_geojson(geo.roads, geo.fitted_roads, result.projection, "road", out);
-    });
-}
-
 } // namespace
 
 int ConvertCommand::run() {
@@ -383,42 +298,17 @@ int ConvertCommand::run() {
     // the profile does: the two never take memory at the same time.
     timer.start("geometry_report");
     nlohmann::ordered_json geometry_report = geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed);
-    // Phase 4: ODD tags on every stretch and point of track, also carried
-    // into the map's <userData>; then the indexes go.
-    timer.start("odd_tagging");
-    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(opt_.taxonomy));
-    const odd::OddProfile network = odd::tag_route({map_input, map}, taxonomy);
-    xodr::ExtraUserData odd_user_data; // the whole network's elements with each road, when asked for
-    if (opt_.odd_user_data) {
-        odd_user_data = odd::OddUserData(network);
-    }
-    odd::OddProfile along;
-    const std::optional<odd::Route> route = route_profile(opt_, result, geo, taxonomy, network, along);
-    const odd::OddProfile& profile = route ? along : network;
-    std::vector<geometry::IndexedAlignment>().swap(geo.indexed);
-
-    // Phase 5: stage every output, then move them into place together. The
-    // large ones are streamed: no output is ever held whole in memory.
-    timer.start("write_outputs");
+    // Phases 4 and 5: ODD tags on every stretch and point of track, and every
+    // output staged, then moved into place together. The large ones are
+    // streamed: no output is ever held whole in memory.
     OutputStage stage(opt_.outdir);
-    // The profile's GeoJSON, JSON and CSV on a second thread, the rest on
-    // this one (about equal shares on the Cologne network, 1.1 s each): each
-    // file has one writer, so no byte depends on the thread count.
-    std::future<void> profile_written =
-        std::async(opt_.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
-            stage.write_with("odd_profile.geojson", [&](std::ostream& out) { odd::write_geojson(profile, out); });
-            stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
-            stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
-        });
-    stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(map.map, mo.revision, out, odd_user_data); });
-    write_debug_outputs(stage, opt_.debug_outputs, result, geo);
-    profile_written.get();
+    Profiled profiled = profile_and_write(stage, opt_, result, geo, map_input, map, mo.revision, timer);
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
-    nlohmann::ordered_json report =
-        stage_reports(result, geo, std::move(geometry_report), map, map_input, route ? &*route : nullptr);
+    nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input,
+                                                  profiled.route ? &*profiled.route : nullptr);
     if (!opt_.no_report) {
-        write_page(stage, opt_.outdir, profile, report, map.map, result);
+        write_page(stage, opt_.outdir, profiled, report, map.map, result);
     } else {
         stage.remove_on_commit("report.html"); // an earlier run's page shows another map
     }

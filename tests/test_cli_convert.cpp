@@ -114,13 +114,37 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
                                " --no-timings --debug-outputs --threads " + threads);
         ASSERT_EQ(r.exit_code, 0) << r.output;
     }
-    for (const char* name : {"map.xodr", "report.json", "ingest.geojson", "geometry.geojson", "roads.geojson"}) {
+    for (const char* name : {"map.xodr", "report.json", "ingest.geojson", "geometry.geojson", "roads.geojson",
+                             "odd_profile.json", "odd_profile.geojson", "odd_profile.csv"}) {
         const std::string a = read_file(dir / "1" / name);
         EXPECT_FALSE(a.empty());
         EXPECT_EQ(a, read_file(dir / "2" / name)) << name;
         EXPECT_EQ(a, read_file(dir / "4" / name)) << name;
     }
     EXPECT_EQ(nlohmann::json::parse(read_file(dir / "1" / "report.json")).count("timings_s"), 0u);
+}
+
+// A whole network's profile is tagged and written a batch of tracks at a
+// time (the page's elements too); with --odd-user-data it is made whole
+// first. Both give the same profile files, page and report.
+TEST(CliConvert, StreamedProfileIsTheWholeOne) {
+    const auto dir = scratch_dir();
+    ASSERT_EQ(run_railodd("sample -o " + quoted(dir / "sample")).exit_code, 0);
+    for (const char* variant : {"streamed", "whole"}) {
+        fs::create_directories(dir / variant);
+        const auto r = run_command("cd " + quoted(dir / variant) + " && " + RAILODD_BIN +
+                                   " convert ../sample/sample_route.osm -o out --no-timings" +
+                                   (std::string{variant} == "whole" ? " --odd-user-data" : ""));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    for (const char* name : {"odd_profile.json", "odd_profile.geojson", "odd_profile.csv", "report.html", "report.json"}) {
+        const std::string a = read_file(dir / "streamed" / "out" / name);
+        EXPECT_GT(a.size(), 1000u) << name;
+        EXPECT_EQ(a, read_file(dir / "whole" / "out" / name)) << name;
+    }
+    EXPECT_EQ(read_file(dir / "streamed" / "out" / "map.xodr").find("code=\"odd\""), std::string::npos);
+    EXPECT_NE(read_file(dir / "whole" / "out" / "map.xodr").find("code=\"odd\""), std::string::npos);
+    EXPECT_FALSE(has_staging_leftovers(dir / "streamed" / "out"));
 }
 
 TEST(CliConvert, SampleRouteGeometrySections) {

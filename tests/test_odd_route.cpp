@@ -15,6 +15,7 @@
 #include "railodd/util/errors.hpp"
 #include "railodd/xodr/map_builder.hpp"
 #include "railodd/xodr/xml_writer.hpp"
+#include "odd_network_support.hpp"
 #include "odd_profile_rows.hpp"
 #include "test_support.hpp"
 
@@ -29,19 +30,10 @@ using namespace railodd::test;
 
 namespace {
 
-struct Fixture {
-    ingest::IngestResult ingest;
-    geometry::TrackGraph tracks, roads;
-    geometry::FittedNetwork fitted, fitted_roads;
-    std::vector<geometry::VerticalProfile> profiles;
-    std::vector<std::vector<geometry::CantStretch>> cants;
-    geometry::Attachment attachment;
-    geometry::Crossings crossings;
+struct Fixture : Network {
     xodr::MapBuild build;
-    odd::Taxonomy taxonomy;
     odd::OddProfile profile;
     nlohmann::json truth;
-    std::vector<geometry::IndexedAlignment> indexed; // placed the features; build and profile made without
 };
 
 const Fixture& fixture() {
@@ -50,22 +42,11 @@ const Fixture& fixture() {
         const auto dir = fs::temp_directory_path() / "railodd-tests" / ("odd-route-" + std::to_string(::getpid()));
         const sample::SampleFiles files = sample::write_sample_route(dir);
         x.truth = nlohmann::json::parse(read_file(files.truth));
-        x.ingest = ingest::read_osm(files.osm, {});
-        x.tracks = geometry::build_track_graph(x.ingest.tracks, x.ingest.features);
-        x.fitted = geometry::fit_track_graph(x.tracks, geometry::FitOptions{});
-        x.profiles = geometry::fit_profiles(x.tracks, x.fitted, x.ingest.tracks, x.ingest.projection, nullptr);
-        x.cants = geometry::fit_cants(x.tracks, x.fitted, x.ingest.tracks, geometry::CantOptions{true});
-        x.roads = geometry::build_track_graph(x.ingest.roads, {});
-        x.fitted_roads = geometry::fit_road_graph(x.roads, geometry::RoadFitOptions{});
-        for (const auto& e : x.fitted.edges) {
-            x.indexed.emplace_back(e.alignment, 2.0);
-        }
-        x.attachment = geometry::attach_features(x.tracks, x.indexed, x.ingest.features, 50.0, 500.0);
-        x.crossings = geometry::find_crossings(x.tracks, x.ingest.tracks, x.ingest.roads, x.ingest.features);
+        static_cast<Network&>(x) = network_of(files.osm);
+        // The map and profile made without the indexes that placed the features.
         const xodr::MapInput in{x.ingest, x.tracks, x.fitted, x.profiles, x.cants, x.roads,
                                 x.fitted_roads, x.attachment, x.crossings};
         x.build = xodr::build_map(in, xodr::MapOptions{});
-        x.taxonomy = odd::load_taxonomy(fs::path{RAILODD_SOURCE_DIR} / "data/odd/railway_odd.yaml");
         x.profile = odd::tag_route({in, x.build}, x.taxonomy);
         return x;
     }();

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <future>
 #include <ostream>
 #include <stdexcept>
@@ -62,7 +63,30 @@ TEST(OutputStage, AFailingWriterLeavesNoOutput) {
                                       }),
                      std::runtime_error);
     } // never committed
-    EXPECT_EQ(entries(out), 0u);
+    EXPECT_FALSE(std::filesystem::exists(out)); // the run made the folder: gone again
+}
+
+// A folder that was there before a failed run stays, with what it held; a
+// scratch file is never moved into place, nor left behind.
+TEST(OutputStage, AFailedRunLeavesAnExistingFolderAsItWas) {
+    const auto out = scratch_dir() / "out";
+    std::filesystem::create_directories(out);
+    { std::ofstream(out / "earlier.txt") << "earlier\n"; }
+    {
+        OutputStage stage(out);
+        stage.write_text("new.txt", "new\n");
+        std::ofstream(stage.scratch_path("rows.tmp")) << "scratch\n";
+    } // never committed
+    EXPECT_EQ(entries(out), 1u);
+    EXPECT_EQ(read(out / "earlier.txt"), "earlier\n");
+    {
+        OutputStage stage(out);
+        std::ofstream(stage.scratch_path("rows.tmp")) << "scratch\n";
+        stage.write_text("new.txt", "new\n");
+        EXPECT_EQ(stage.commit().size(), 1u);
+    }
+    EXPECT_EQ(entries(out), 2u); // earlier.txt and new.txt: no scratch, no staging folder
+    EXPECT_EQ(read(out / "new.txt"), "new\n");
 }
 
 TEST(OutputStage, WritersOnTwoThreadsCommitBothFiles) {

@@ -7,6 +7,7 @@
 
 #include "json_read.hpp"
 #include "profile_elements.hpp"
+#include "profile_text.hpp"
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/input_file.hpp"
@@ -109,48 +110,54 @@ nlohmann::ordered_json to_json(const OddProfile& profile) {
     return j;
 }
 
+void profile_text::write_json_head(const OddProfile& head, const rows::KindList& kinds, std::ostream& out) {
+    OddProfile bare{head.taxonomy_name, head.taxonomy_version, head.taxonomy_file,
+                    head.route, head.length_m, head.tracks, {}, {}, {}, false, {}};
+    bare.along_route = head.along_route;
+    ojson j = to_json(bare);
+    out << "{\n";
+    for (const char* key : {"railodd", "taxonomy", "route"}) {
+        out << " \"" << key << "\": " << j[key].dump() << ",\n";
+    }
+    if (!head.track_ends.empty()) {
+        out << " \"track_ends\": [\n";
+        for (std::size_t i = 0; i < head.track_ends.size(); ++i) {
+            out << "  " << track_end_json(head.track_ends[i]).dump() << (i + 1 < head.track_ends.size() ? ",\n" : "\n");
+        }
+        out << " ],\n";
+    }
+    out << " \"element_kinds\": [\n";
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        out << "  " << ojson::array({kinds[i].first, kinds[i].second}).dump() << (i + 1 < kinds.size() ? ",\n" : "\n");
+    }
+    out << " ],\n \"element_columns\": " << ojson(rows::columns()).dump() << ",\n";
+    out << " \"elements\": [\n";
+}
+
+void profile_text::write_json_tail(const OddProfile& tail, std::ostream& out) {
+    out << " ],\n \"unparsed\": [\n";
+    for (std::size_t i = 0; i < tail.unparsed.size(); ++i) {
+        const auto& u = tail.unparsed[i];
+        out << "  " << ojson{{"osm_ids", u.osm_ids}, {"tag", u.tag}, {"value", u.value}, {"reason", u.reason}}.dump()
+            << (i + 1 < tail.unparsed.size() ? ",\n" : "\n");
+    }
+    out << " ],\n \"summary\": " << (tail.summary.is_null() ? ojson::object() : tail.summary).dump(1) << "\n}\n";
+}
+
 // The same document as to_json(profile).dump(), written element by element:
 // a whole network's profile (180,000 elements on Cologne) never exists as one
 // JSON tree, and each element sits on its own line.
 void write_json(const OddProfile& profile, std::ostream& out) {
-    OddProfile bare{profile.taxonomy_name, profile.taxonomy_version, profile.taxonomy_file,
-                    profile.route, profile.length_m, profile.tracks, {}, {}, {}, false, {}};
-    bare.along_route = profile.along_route;
-    ojson head = to_json(bare);
-    out << "{\n";
-    for (const char* key : {"railodd", "taxonomy", "route"}) {
-        out << " \"" << key << "\": " << head[key].dump() << ",\n";
-    }
-    if (!profile.track_ends.empty()) {
-        out << " \"track_ends\": [\n";
-        for (std::size_t i = 0; i < profile.track_ends.size(); ++i) {
-            out << "  " << track_end_json(profile.track_ends[i]).dump()
-                << (i + 1 < profile.track_ends.size() ? ",\n" : "\n");
-        }
-        out << " ],\n";
-    }
     const rows::Kinds kinds = rows::kinds_of(profile.elements);
-    out << " \"element_kinds\": [\n";
-    for (std::size_t i = 0; i < kinds.list.size(); ++i) {
-        out << "  " << ojson::array({kinds.list[i].first, kinds.list[i].second}).dump()
-            << (i + 1 < kinds.list.size() ? ",\n" : "\n");
-    }
-    out << " ],\n \"element_columns\": " << ojson(rows::columns()).dump() << ",\n";
-    out << " \"elements\": [\n";
+    profile_text::write_json_head(profile, kinds.list, out);
     std::string line;
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        line.assign("  ");
+        line.assign(i > 0 ? ",\n  " : "  ");
         rows::append_row(line, profile.elements[i], kinds.of[i]);
-        line += i + 1 < profile.elements.size() ? ",\n" : "\n";
         out << line;
     }
-    out << " ],\n \"unparsed\": [\n";
-    for (std::size_t i = 0; i < profile.unparsed.size(); ++i) {
-        const auto& u = profile.unparsed[i];
-        out << "  " << ojson{{"osm_ids", u.osm_ids}, {"tag", u.tag}, {"value", u.value}, {"reason", u.reason}}.dump()
-            << (i + 1 < profile.unparsed.size() ? ",\n" : "\n");
-    }
-    out << " ],\n \"summary\": " << (profile.summary.is_null() ? ojson::object() : profile.summary).dump(1) << "\n}\n";
+    out << (profile.elements.empty() ? "" : "\n");
+    profile_text::write_json_tail(profile, out);
 }
 
 std::string to_json_text(const OddProfile& profile) {

@@ -3,6 +3,7 @@
 
 #include "json_text.hpp"
 #include "profile_elements.hpp"
+#include "profile_text.hpp"
 #include "text.hpp"
 
 #include <charconv>
@@ -48,7 +49,9 @@ void append_geometry(std::string& out, const TaggedElement& e) {
     out += "]}";
 }
 
-void append_feature(std::string& out, const TaggedElement& e) {
+} // namespace
+
+void profile_text::append_feature(std::string& out, const TaggedElement& e) {
     out += R"({"type":"Feature","geometry":)";
     append_geometry(out, e);
     out += R"(,"properties":{"odd_element":)";
@@ -78,6 +81,8 @@ void append_feature(std::string& out, const TaggedElement& e) {
     json_text::string(out, e.source);
     out += "}}";
 }
+
+namespace {
 
 void append_value_text(std::string& out, const AttributeValue& value) {
     if (const auto* d = std::get_if<double>(&value)) {
@@ -125,18 +130,55 @@ void append_row(std::string& out, const std::vector<std::string>& fields) {
 
 } // namespace
 
+void profile_text::append_csv_header(std::string& out) {
+    append_row(out, {"odd_element", "element_id", "road_id", "s_start", "s_end", "chainage_start", "chainage_end",
+                     "track", "point", "attributes", "osm_ids", "source"});
+}
+
+// Fields appended in place, two buffers reused: a vector of strings per row
+// made writing the Cologne network's 180,000 rows take half a second.
+void profile_text::append_csv_row(std::string& row, std::string& field, const TaggedElement& e) {
+    for (const std::string* text : {&e.element, &e.element_id, &e.road_id}) {
+        append_field(row, *text);
+        row += ',';
+    }
+    for (const double v : {e.s_start, e.s_end, e.chainage_start, e.chainage_end}) {
+        append_metres(row, v);
+        row += ',';
+    }
+    row += std::to_string(e.track);
+    row += e.point ? ",true," : ",false,";
+    field.clear();
+    for (std::size_t i = 0; i < e.attributes.size(); ++i) {
+        field += i > 0 ? ";" : "";
+        field += e.attributes[i].name;
+        field += '=';
+        append_value_text(field, e.attributes[i].value);
+    }
+    append_field(row, field);
+    row += ',';
+    field.clear();
+    for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {
+        field += i > 0 ? " " : "";
+        field += e.osm_ids[i];
+    }
+    append_field(row, field);
+    row += ',';
+    append_field(row, e.source);
+    row += "\r\n";
+}
+
 // One feature per line: a whole route's profile stays a few MB, and diffs of
 // two runs read element by element.
 void write_geojson(const OddProfile& profile, std::ostream& out) {
-    out << "{\"type\": \"FeatureCollection\", \"name\": \"odd_profile\", \"features\": [\n";
+    out << profile_text::geojson_head;
     std::string line;
     for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        line.clear();
-        append_feature(line, profile.elements[i]);
-        line += i + 1 < profile.elements.size() ? ",\n" : "\n";
+        line.assign(i > 0 ? ",\n" : "");
+        profile_text::append_feature(line, profile.elements[i]);
         out << line;
     }
-    out << "]}\n";
+    out << (profile.elements.empty() ? "" : "\n") << profile_text::geojson_tail;
 }
 
 std::string to_geojson(const OddProfile& profile) {
@@ -147,41 +189,11 @@ std::string to_geojson(const OddProfile& profile) {
 
 void write_csv(const OddProfile& profile, std::ostream& out) {
     std::string row, field;
-    append_row(row, {"odd_element", "element_id", "road_id", "s_start", "s_end", "chainage_start", "chainage_end",
-                     "track", "point", "attributes", "osm_ids", "source"});
+    profile_text::append_csv_header(row);
     out << row;
-    // Fields appended in place, two buffers reused: a vector of strings per
-    // row made writing the Cologne network's 180,000 rows take half a second.
     for (const auto& e : profile.elements) {
         row.clear();
-        for (const std::string* text : {&e.element, &e.element_id, &e.road_id}) {
-            append_field(row, *text);
-            row += ',';
-        }
-        for (const double v : {e.s_start, e.s_end, e.chainage_start, e.chainage_end}) {
-            append_metres(row, v);
-            row += ',';
-        }
-        row += std::to_string(e.track);
-        row += e.point ? ",true," : ",false,";
-        field.clear();
-        for (std::size_t i = 0; i < e.attributes.size(); ++i) {
-            field += i > 0 ? ";" : "";
-            field += e.attributes[i].name;
-            field += '=';
-            append_value_text(field, e.attributes[i].value);
-        }
-        append_field(row, field);
-        row += ',';
-        field.clear();
-        for (std::size_t i = 0; i < e.osm_ids.size(); ++i) {
-            field += i > 0 ? " " : "";
-            field += e.osm_ids[i];
-        }
-        append_field(row, field);
-        row += ',';
-        append_field(row, e.source);
-        row += "\r\n";
+        profile_text::append_csv_row(row, field, e);
         out << row;
     }
 }

@@ -74,93 +74,126 @@ private:
 
 // km per class of the number attribute `name` of the elements of kind `k`,
 // classed by magnitude: a gradient's sign is its direction, not its class.
-ojson km_by_class(const OddProfile& p, const Taxonomy* taxonomy, const Kind& k, const std::string& name) {
-    const Attribute* attribute = taxonomy_attribute(taxonomy, k, name);
-    ClassSums sums;
-    if (attribute) {
-        for (const auto& bin : attribute->bins) {
-            sums.add(bin.label, 0.0); // every class listed, so that zero km shows as zero
+class KmByClass {
+public:
+    KmByClass(const Taxonomy* taxonomy, const Kind& k, std::string name)
+        : kind_(k), name_(std::move(name)), attribute_(taxonomy_attribute(taxonomy, k, name_)) {
+        if (attribute_) {
+            for (const auto& bin : attribute_->bins) {
+                sums_.add(bin.label, 0.0); // every class listed, so that zero km shows as zero
+            }
         }
     }
-    for (const auto& e : p.elements) {
-        if (!is(e, k)) {
-            continue;
+    void add(const TaggedElement& e) {
+        if (!is(e, kind_)) {
+            return;
         }
-        const AttributeValue* v = e.find(name);
+        const AttributeValue* v = e.find(name_);
         const double* number = v ? std::get_if<double>(v) : nullptr;
         std::string label = "unknown";
         if (number) {
-            label = attribute ? classify(*attribute, std::abs(*number)) : "";
+            label = attribute_ ? classify(*attribute_, std::abs(*number)) : "";
             label = label.empty() ? "unclassified" : label;
         } else if (const AttributeValue* kind = e.find("kind"); kind && std::holds_alternative<std::string>(*kind)) {
             label = "kind: " + std::get<std::string>(*kind); // maxspeed=signals / none
         }
-        sums.add(label, range_m(e));
+        sums_.add(label, range_m(e));
     }
-    return sums.km_json();
-}
+    ojson json() const { return sums_.km_json(); }
+
+private:
+    Kind kind_;
+    std::string name_;
+    const Attribute* attribute_;
+    ClassSums sums_;
+};
 
 // km per value of the enum attribute `name` of the elements of kind `k`:
 // every taxonomy value listed in its order, then values it does not know.
-ojson km_by_value(const OddProfile& p, const Taxonomy* taxonomy, const Kind& k, const std::string& name) {
-    const Attribute* attribute = taxonomy_attribute(taxonomy, k, name);
-    ClassSums sums;
-    if (attribute) {
-        for (const auto& v : attribute->values) {
-            sums.add(v, 0.0);
+class KmByValue {
+public:
+    KmByValue(const Taxonomy* taxonomy, const Kind& k, std::string name) : kind_(k), name_(std::move(name)) {
+        if (const Attribute* attribute = taxonomy_attribute(taxonomy, k, name_)) {
+            for (const auto& v : attribute->values) {
+                sums_.add(v, 0.0);
+            }
         }
     }
-    for (const auto& e : p.elements) {
-        if (is(e, k)) {
-            const AttributeValue* v = e.find(name);
-            sums.add(v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "unknown", range_m(e));
+    void add(const TaggedElement& e) {
+        if (is(e, kind_)) {
+            const AttributeValue* v = e.find(name_);
+            sums_.add(v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "unknown", range_m(e));
         }
     }
-    return sums.km_json();
-}
+    ojson json() const { return sums_.km_json(); }
 
-ojson count_by(const OddProfile& p, const Kind& k, const std::string& name) {
-    std::map<std::string, std::size_t> counts; // sorted: deterministic
-    for (const auto& e : p.elements) {
-        if (is(e, k)) {
-            const AttributeValue* v = e.find(name);
-            ++counts[v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "unknown"];
+private:
+    Kind kind_;
+    std::string name_;
+    ClassSums sums_;
+};
+
+class CountBy {
+public:
+    CountBy(const Kind& k, std::string name) : kind_(k), name_(std::move(name)) {}
+    void add(const TaggedElement& e) {
+        if (is(e, kind_)) {
+            const AttributeValue* v = e.find(name_);
+            ++counts_[v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "unknown"];
         }
     }
-    ojson j = ojson::object();
-    for (const auto& [label, n] : counts) {
-        j[label] = n;
+    ojson json() const {
+        ojson j = ojson::object();
+        for (const auto& [label, n] : counts_) {
+            j[label] = n;
+        }
+        return j;
     }
-    return j;
-}
+
+private:
+    Kind kind_;
+    std::string name_;
+    std::map<std::string, std::size_t> counts_; // sorted: deterministic
+};
 
 // A stretch written over several roads or tracks (a tunnel through a switch)
 // is several elements with the same OSM ids: one feature.
-std::size_t count(const OddProfile& p, const Kind& k) {
-    std::set<std::vector<std::string>> ranges;
-    std::size_t points = 0;
-    for (const auto& e : p.elements) {
-        if (is(e, k)) {
-            e.point || e.osm_ids.empty() ? ++points : (ranges.insert(e.osm_ids), 0);
+class Count {
+public:
+    explicit Count(const Kind& k) : kind_(k) {}
+    void add(const TaggedElement& e) {
+        if (is(e, kind_)) {
+            e.point || e.osm_ids.empty() ? ++points_ : (ranges_.insert(e.osm_ids), 0);
         }
     }
-    return points + ranges.size();
-}
+    std::size_t value() const { return points_ + ranges_.size(); }
+
+private:
+    Kind kind_;
+    std::set<std::vector<std::string>> ranges_;
+    std::size_t points_ = 0;
+};
 
 // A structure tagged as a point (no s-range on the map) still has its length
 // attribute from the OSM way.
-ojson structures(const OddProfile& p, const Kind& k) {
-    const std::size_t n = count(p, k);
-    double metres = 0.0;
-    for (const auto& e : p.elements) {
-        if (is(e, k)) {
+class Structures {
+public:
+    explicit Structures(const Kind& k) : kind_(k), count_(k) {}
+    void add(const TaggedElement& e) {
+        count_.add(e);
+        if (is(e, kind_)) {
             const AttributeValue* length = e.find("length");
-            metres += e.point && length && std::holds_alternative<double>(*length) ? std::get<double>(*length)
-                                                                                   : range_m(e);
+            metres_ += e.point && length && std::holds_alternative<double>(*length) ? std::get<double>(*length)
+                                                                                    : range_m(e);
         }
     }
-    return {{"count", n}, {"length_km", km(metres)}};
-}
+    ojson json() const { return {{"count", count_.value()}, {"length_km", km(metres_)}}; }
+
+private:
+    Kind kind_;
+    Count count_;
+    double metres_ = 0.0;
+};
 
 // --- text ------------------------------------------------------------------
 
@@ -222,26 +255,67 @@ const ojson& field(const ojson& s, const char* key) {
 
 } // namespace
 
-nlohmann::ordered_json summarize(const OddProfile& p, const Taxonomy* taxonomy) {
+struct SummaryBuilder::State {
+    explicit State(const Taxonomy* t)
+        : curves(t, curve, "radius"), gradients(t, gradient, "gradient"), speeds(t, speed_limit, "maxspeed"),
+          land(t, land_use, "kind") {}
+    std::size_t elements = 0;
+    KmByClass curves, gradients, speeds;
+    KmByValue land;
+    CountBy barriers{level_crossing, "barrier"}, signals{signal, "category"};
+    Count footpaths{footpath_crossing}, stations{station}, halts{halt}, platforms{platform}, switches{switch_};
+    Structures tunnels{tunnel}, bridges{bridge};
+};
+
+SummaryBuilder::SummaryBuilder(const Taxonomy* taxonomy) : state_(std::make_unique<State>(taxonomy)) {}
+
+SummaryBuilder::~SummaryBuilder() = default;
+
+void SummaryBuilder::add(const TaggedElement& e) {
+    State& s = *state_;
+    ++s.elements;
+    s.curves.add(e);
+    s.gradients.add(e);
+    s.speeds.add(e);
+    s.land.add(e);
+    s.barriers.add(e);
+    s.signals.add(e);
+    for (Count* c : {&s.footpaths, &s.stations, &s.halts, &s.platforms, &s.switches}) {
+        c->add(e);
+    }
+    s.tunnels.add(e);
+    s.bridges.add(e);
+}
+
+nlohmann::ordered_json SummaryBuilder::json(const OddProfile& head) const {
+    const State& s = *state_;
     ojson j;
-    j["length_km"] = km(p.length_m);
-    j["tracks"] = p.tracks;
-    j["elements"] = p.elements.size();
-    j["curve_km_by_radius"] = km_by_class(p, taxonomy, curve, "radius");
-    j["gradient_km_by_class"] = km_by_class(p, taxonomy, gradient, "gradient");
-    j["speed_km_by_class"] = km_by_class(p, taxonomy, speed_limit, "maxspeed");
-    j["landuse_km_by_kind"] = km_by_value(p, taxonomy, land_use, "kind");
-    j["level_crossings_by_barrier"] = count_by(p, level_crossing, "barrier");
-    j["footpath_crossings"] = count(p, footpath_crossing);
-    j["stations"] = count(p, station);
-    j["halts"] = count(p, halt);
-    j["platforms"] = count(p, platform);
-    j["tunnels"] = structures(p, tunnel);
-    j["bridges"] = structures(p, bridge);
-    j["switches"] = count(p, switch_);
-    j["signals_by_category"] = count_by(p, signal, "category");
-    j["unparsed_values"] = p.unparsed.size();
+    j["length_km"] = km(head.length_m);
+    j["tracks"] = head.tracks;
+    j["elements"] = s.elements;
+    j["curve_km_by_radius"] = s.curves.json();
+    j["gradient_km_by_class"] = s.gradients.json();
+    j["speed_km_by_class"] = s.speeds.json();
+    j["landuse_km_by_kind"] = s.land.json();
+    j["level_crossings_by_barrier"] = s.barriers.json();
+    j["footpath_crossings"] = s.footpaths.value();
+    j["stations"] = s.stations.value();
+    j["halts"] = s.halts.value();
+    j["platforms"] = s.platforms.value();
+    j["tunnels"] = s.tunnels.json();
+    j["bridges"] = s.bridges.json();
+    j["switches"] = s.switches.value();
+    j["signals_by_category"] = s.signals.json();
+    j["unparsed_values"] = head.unparsed.size();
     return j;
+}
+
+nlohmann::ordered_json summarize(const OddProfile& p, const Taxonomy* taxonomy) {
+    SummaryBuilder b(taxonomy);
+    for (const auto& e : p.elements) {
+        b.add(e);
+    }
+    return b.json(p);
 }
 
 std::string summary_text(const OddProfile& p, const Taxonomy* taxonomy) {

@@ -15,9 +15,35 @@ namespace {
 
 std::string id_of(const ingest::Feature& f) { return f.osm_type + ":" + std::to_string(f.id); }
 
+std::vector<TaggedAttribute> switch_attributes(const TagContext& ctx, std::int64_t node, const std::string& direction) {
+    std::vector<TaggedAttribute> a;
+    const ingest::Feature* f = ctx.feature_at_node(node);
+    const Element* el = ctx.taxonomy().find("Scenery/Track layout/Switch");
+    const std::string type = f ? ingest::tag_or(f->tags, "railway:switch", "default") : "default";
+    const Attribute* ta = ctx.taxonomy().attribute(*el, "type");
+    a.push_back({"type", ta && ta->has_value(type) ? type : std::string{"default"}});
+    if (!direction.empty()) {
+        a.push_back({"direction", direction});
+    }
+    const std::string side = f ? ingest::tag_or(f->tags, "railway:turnout_side") : "";
+    if (side == "left" || side == "right") {
+        a.push_back({"turnout_side", side});
+    }
+    return a;
+}
+
+struct SwitchAt {
+    std::size_t edge = 0;
+    double s = 0.0;
+    std::int64_t node_id = 0;
+    std::string node; // "node:ID"
+    std::string direction;
+};
+
 // Written switches sit at s of their main-track connecting road; vertices of
-// kind switch that got no <switch> (an untied branch) are tagged at the vertex.
-void tag_switches(TagContext& ctx) {
+// kind switch that got no <switch> (an untied branch) are tagged at the
+// vertex. Every switch of the layout once, whichever batch holds its edge.
+std::vector<SwitchAt> switches_of(TagContext& ctx) {
     std::map<std::size_t, std::pair<std::size_t, double>> road_to_edge; // road index -> (edge, s0)
     for (std::size_t e = 0; e < ctx.map().rail.pieces.size(); ++e) {
         for (const auto& p : ctx.map().rail.pieces[e]) {
@@ -28,23 +54,8 @@ void tag_switches(TagContext& ctx) {
     for (std::size_t i = 0; i < ctx.map().map.roads.size(); ++i) {
         road_index[ctx.map().map.roads[i].id] = i;
     }
+    std::vector<SwitchAt> out;
     std::set<std::string> done;
-    auto attrs_of = [&](std::int64_t node, const std::string& direction) {
-        std::vector<TaggedAttribute> a;
-        const ingest::Feature* f = ctx.feature_at_node(node);
-        const Element* el = ctx.taxonomy().find("Scenery/Track layout/Switch");
-        const std::string type = f ? ingest::tag_or(f->tags, "railway:switch", "default") : "default";
-        const Attribute* ta = ctx.taxonomy().attribute(*el, "type");
-        a.push_back({"type", ta && ta->has_value(type) ? type : std::string{"default"}});
-        if (!direction.empty()) {
-            a.push_back({"direction", direction});
-        }
-        const std::string side = f ? ingest::tag_or(f->tags, "railway:turnout_side") : "";
-        if (side == "left" || side == "right") {
-            a.push_back({"turnout_side", side});
-        }
-        return a;
-    };
     for (const auto& road : ctx.map().map.roads) {
         for (const auto& sw : road.switches) {
             const auto [edge, s0] = road_to_edge.at(road_index.at(sw.main_track.road_id));
@@ -52,11 +63,10 @@ void tag_switches(TagContext& ctx) {
             if (done.count(node)) {
                 continue; // a slip with two <switch> at one vertex is one switch of the layout
             }
-            const std::int64_t node_id = std::stoll(node.substr(node.find(':') + 1));
             // Running along the main track road with increasing s from the
             // switch point passes the points from the toe.
-            ctx.tag("Scenery/Track layout/Switch", edge, s0 + sw.main_track.s, s0 + sw.main_track.s,
-                    attrs_of(node_id, sw.main_track.dir == "+" ? "facing" : "trailing"), {node}, "osm+derived");
+            out.push_back({edge, s0 + sw.main_track.s, std::stoll(node.substr(node.find(':') + 1)), node,
+                           sw.main_track.dir == "+" ? "facing" : "trailing"});
             done.insert(node);
         }
     }
@@ -69,8 +79,18 @@ void tag_switches(TagContext& ctx) {
         const std::size_t e = v.edges.front();
         const auto& fe = ctx.geo().fitted_tracks.edges[e];
         const bool at_start = (fe.reversed ? g.edges[e].to : g.edges[e].from) == static_cast<std::size_t>(&v - g.vertices.data());
-        const double s = at_start ? 0.0 : ctx.alignment(e).length();
-        ctx.tag("Scenery/Track layout/Switch", e, s, s, attrs_of(v.node_id, ""), {node}, "osm+derived");
+        out.push_back({e, at_start ? 0.0 : ctx.alignment(e).length(), v.node_id, node, ""});
+    }
+    return out;
+}
+
+void tag_switches(TagContext& ctx) {
+    const auto& switches = ctx.prepared<std::vector<SwitchAt>>("switches", [&] { return switches_of(ctx); });
+    for (const SwitchAt& sw : switches) {
+        if (ctx.in_batch(sw.edge)) {
+            ctx.tag("Scenery/Track layout/Switch", sw.edge, sw.s, sw.s, switch_attributes(ctx, sw.node_id, sw.direction),
+                    {sw.node}, "osm+derived");
+        }
     }
 }
 
@@ -97,12 +117,16 @@ void add_crossing_road(const TagContext& ctx, const geometry::RoadRailCrossing& 
 
 void tag_crossings(TagContext& ctx) {
     static const std::set<std::string> foot{"footway", "path", "cycleway", "pedestrian", "steps", "bridleway"};
-    std::map<std::int64_t, const ingest::Way*> roads;
-    for (const auto& w : ctx.geo().ingest.roads) {
-        roads[w.id] = &w;
-    }
+    using Roads = std::map<std::int64_t, const ingest::Way*>;
+    const Roads& roads = ctx.prepared<Roads>("crossing_roads", [&] {
+        Roads r;
+        for (const auto& w : ctx.geo().ingest.roads) {
+            r[w.id] = &w;
+        }
+        return r;
+    });
     for (const auto& c : ctx.geo().crossings.road_rail) {
-        if (c.grade_separated) {
+        if (c.grade_separated || !ctx.in_batch(c.edge)) {
             continue;
         }
         const double s = ctx.alignment(c.edge).project(c.point.x, c.point.y).s;
@@ -136,7 +160,7 @@ void tag_crossings(TagContext& ctx) {
                 "osm+derived");
     }
     for (const auto& c : ctx.geo().crossings.tracks) {
-        if (c.grade_separated) {
+        if (c.grade_separated || !ctx.in_batch(c.edge_a)) {
             continue;
         }
         const double s = ctx.alignment(c.edge_a).project(c.point.x, c.point.y).s;
@@ -149,7 +173,7 @@ void tag_crossings(TagContext& ctx) {
 }
 
 void tag_structures(TagContext& ctx) {
-    for (std::size_t e = 0; e < ctx.geo().tracks.edges.size(); ++e) {
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         for (const WayRange& r : ctx.ways(e)) {
             const bool tunnel = ingest::tag_or(r.way->tags, "tunnel", "no") != "no";
             const bool bridge = !tunnel && ingest::tag_or(r.way->tags, "bridge", "no") != "no";

@@ -30,7 +30,7 @@ constexpr double max_vertical_radius_m = 30000.0;
 } // namespace
 
 void tag_horizontal(TagContext& ctx) {
-    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         const geometry::Alignment& a = ctx.geo().fitted_tracks.edges[e].alignment;
         double s = 0.0;
         for (const auto& p : a.primitives) {
@@ -191,7 +191,7 @@ void tag_cant_deficiency(TagContext& ctx, std::size_t e, const std::vector<geome
 void tag_vertical_and_cant(TagContext& ctx) {
     const auto& profiles = ctx.geo().profiles;
     const auto& cants = ctx.geo().cants;
-    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         // Without elevation data the profile is flat by assumption, not a
         // measured level track: no gradient is claimed (report.json says so).
         if (e < profiles.size() && profiles[e].source != geometry::ElevationSource::flat) {

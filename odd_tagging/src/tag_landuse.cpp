@@ -122,10 +122,9 @@ std::pair<double, double> beside(const geometry::Pose& p, double d, int side) {
     return {p.x - side * d * std::sin(p.hdg), p.y + side * d * std::cos(p.hdg)};
 }
 
-std::set<Cell> probed_cells(TagContext& ctx) {
+std::set<Cell> probed_cells(const TagContext& ctx) {
     std::set<Cell> cells;
-    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
-        const auto& ia = ctx.alignment(e);
+    ctx.for_each_alignment([&](std::size_t, const geometry::IndexedAlignment& ia) {
         const int k = probe_count(ia.length());
         for (int i = 0; i < k; ++i) {
             const auto p = ia.evaluate(ia.length() * (i + 0.5) / k);
@@ -137,7 +136,7 @@ std::set<Cell> probed_cells(TagContext& ctx) {
                 }
             }
         }
-    }
+    });
     return cells;
 }
 
@@ -174,8 +173,9 @@ void tag_land_use(TagContext& ctx) {
     if (areas.empty()) {
         return;
     }
-    const AreaIndex index(areas, probed_cells(ctx));
-    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
+    // Registered in the cells of every batch's probes, once.
+    const AreaIndex& index = ctx.prepared<AreaIndex>("land_use", [&] { return AreaIndex(areas, probed_cells(ctx)); });
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         const auto& ia = ctx.alignment(e);
         const int k = probe_count(ia.length());
         std::string kind; // of the open run; "" none

@@ -37,6 +37,9 @@ std::vector<TaggedAttribute> signal_attributes(const ingest::Feature& f) {
 void tag_point_features(TagContext& ctx) {
     const auto& features = ctx.geo().ingest.features;
     for (const auto& at : ctx.geo().attachment.attached) {
+        if (!ctx.in_batch(at.edge)) {
+            continue;
+        }
         const ingest::Feature& f = features[at.feature];
         const std::vector<std::string> ids{f.osm_type + ":" + std::to_string(f.id)};
         if (f.kind == "station") {

@@ -82,11 +82,12 @@ void tag_surroundings(TagContext& ctx) {
     const Element* el = ctx.taxonomy().find(path);
     const Attribute* classes = ctx.taxonomy().attribute(*el, "road_class");
     const Attribute* distance = ctx.taxonomy().attribute(*el, "distance");
-    const auto grid = road_grid(ctx, classes);
+    using Grid = std::map<Cell, std::vector<RoadSample>>;
+    const Grid& grid = ctx.prepared<Grid>("surroundings", [&] { return road_grid(ctx, classes); });
     if (grid.empty()) {
         return;
     }
-    for (std::size_t e = 0; e < ctx.geo().fitted_tracks.edges.size(); ++e) {
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         const auto& ia = ctx.alignment(e);
         const int k = std::max(1, static_cast<int>(std::ceil(ia.length() / probe_m)));
         std::string key;        // distance class + road class of the open run

@@ -55,16 +55,20 @@ int neighbours(const std::map<Cell, std::vector<Sample>>& grid, std::size_t edge
 } // namespace
 
 void tag_track_count(TagContext& ctx) {
-    const std::size_t n = ctx.geo().fitted_tracks.edges.size();
-    std::map<Cell, std::vector<Sample>> grid;
-    for (std::size_t e = 0; e < n; ++e) {
-        const auto& ia = ctx.alignment(e);
-        for (double s = 0.0; s <= ia.length(); s += sample_m) {
-            const auto p = ia.evaluate(s);
-            grid[cell_of(p.x, p.y)].push_back({e, p.x, p.y, p.hdg});
-        }
-    }
-    for (std::size_t e = 0; e < n; ++e) {
+    using Grid = std::map<Cell, std::vector<Sample>>;
+    // Every track's samples, once for all batches: a batch's tracks count
+    // their neighbours in any batch.
+    const Grid& grid = ctx.prepared<Grid>("track_count", [&] {
+        Grid g;
+        ctx.for_each_alignment([&](std::size_t e, const geometry::IndexedAlignment& ia) {
+            for (double s = 0.0; s <= ia.length(); s += sample_m) {
+                const auto p = ia.evaluate(s);
+                g[cell_of(p.x, p.y)].push_back({e, p.x, p.y, p.hdg});
+            }
+        });
+        return g;
+    });
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         const auto& ia = ctx.alignment(e);
         const double len = ia.length();
         if (len <= 1e-6) {

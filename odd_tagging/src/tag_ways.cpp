@@ -156,7 +156,7 @@ void tag_train_radio(TagContext& ctx, std::size_t e, const WayRange& r, const st
 } // namespace
 
 void tag_way_attributes(TagContext& ctx) {
-    for (std::size_t e = 0; e < ctx.geo().tracks.edges.size(); ++e) {
+    for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         for (const WayRange& r : ctx.ways(e)) {
             if (r.s1 - r.s0 <= 1e-6) {
                 continue;

@@ -5,7 +5,10 @@
 #include "railodd/odd/profile_summary.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <set>
+#include <stdexcept>
+#include <tuple>
 #include <sstream>
 
 namespace railodd::odd {
@@ -37,32 +40,86 @@ TrackEnd track_end(const TaggerInput& input, std::size_t e, const geometry::Inde
 
 } // namespace
 
-OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
+namespace {
+
+// Everything but the elements: what the route is and where its tracks end.
+OddProfile profile_head(const TaggerInput& input, const Taxonomy& taxonomy, const TagContext& ctx) {
     OddProfile p;
     p.taxonomy_name = taxonomy.name;
     p.taxonomy_version = taxonomy.version;
     p.taxonomy_file = taxonomy.source;
     p.route = input.map_input.ingest.source + " (" + input.map_input.ingest.selection + ")";
-    TagContext ctx(input, taxonomy, p);
-    for (std::size_t e = 0; e < input.map_input.fitted_tracks.edges.size(); ++e) {
+    ctx.for_each_alignment([&](std::size_t e, const geometry::IndexedAlignment& a) {
         if (ctx.written(e)) {
-            const auto& a = ctx.alignment(e);
             p.length_m += a.length();
             ++p.tracks;
             p.track_ends.push_back(track_end(input, e, a));
         }
+    });
+    return p;
+}
+
+// Collects the batches into one profile (tag_route).
+class WholeProfile : public ProfileSink {
+public:
+    explicit WholeProfile(OddProfile& out) : out_(out) {}
+    void begin(const OddProfile& head) override { out_ = head; }
+    void add(std::deque<TaggedElement>& batch) override {
+        std::move(batch.begin(), batch.end(), std::back_inserter(out_.elements));
     }
-    // Scenery from the geometry, then from the ways' tags and the features;
-    // operational conditions and connectivity come with the way and structure tags.
-    tag_horizontal(ctx);
-    tag_vertical_and_cant(ctx);
-    tag_track_count(ctx);
-    tag_way_attributes(ctx);
-    tag_features(ctx);
-    tag_surroundings(ctx);
-    tag_land_use(ctx);
-    ctx.sort_elements();
-    p.summary = summarize(p, &taxonomy);
+    void end(const OddProfile& tail) override {
+        out_.unparsed = tail.unparsed;
+        out_.summary = tail.summary;
+    }
+
+private:
+    OddProfile& out_;
+};
+
+} // namespace
+
+void tag_network(const TaggerInput& input, const Taxonomy& taxonomy, ProfileSink& sink,
+                 std::size_t tracks_per_batch) {
+    if (tracks_per_batch == 0) {
+        throw std::invalid_argument("tag_network: a batch holds at least one track");
+    }
+    OddProfile p;
+    TagContext ctx(input, taxonomy, p);
+    p = profile_head(input, taxonomy, ctx);
+    sink.begin(p);
+    SummaryBuilder summary(&taxonomy);
+    const std::size_t tracks = input.map_input.fitted_tracks.edges.size();
+    for (std::size_t first = 0; first < tracks; first += tracks_per_batch) {
+        ctx.set_batch(first, std::min(tracks, first + tracks_per_batch));
+        // Scenery from the geometry, then from the ways' tags and the features;
+        // operational conditions and connectivity come with the way and structure tags.
+        tag_horizontal(ctx);
+        tag_vertical_and_cant(ctx);
+        tag_track_count(ctx);
+        tag_way_attributes(ctx);
+        tag_features(ctx);
+        tag_surroundings(ctx);
+        tag_land_use(ctx);
+        ctx.sort_elements();
+        for (const auto& e : p.elements) {
+            summary.add(e);
+        }
+        sink.add(p.elements);
+        std::deque<TaggedElement>().swap(p.elements);
+        ctx.end_batch();
+    }
+    // By OSM id, tag and value: the same list whatever the batches.
+    std::stable_sort(p.unparsed.begin(), p.unparsed.end(), [](const Unparsed& a, const Unparsed& b) {
+        return std::tie(a.osm_ids, a.tag, a.value) < std::tie(b.osm_ids, b.tag, b.value);
+    });
+    p.summary = summary.json(p);
+    sink.end(p);
+}
+
+OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
+    OddProfile p;
+    WholeProfile whole(p);
+    tag_network(input, taxonomy, whole);
     return p;
 }
 

@@ -75,7 +75,9 @@ void write_html(const PageData& data, std::ostream& out) {
         }
         out << t.substr(pos, at - pos);
         if (name == "DATA") {
-            write_script_json(data.json, out);
+            for (const auto& part : data.parts) {
+                write_script_json(part, out);
+            }
         } else if (name == "TITLE") {
             out << title;
         } else if (name == "VERSION") {
@@ -89,7 +91,7 @@ void write_html(const PageData& data, std::ostream& out) {
 
 std::string render_html(const nlohmann::ordered_json& data) {
     PageData page{data.value("meta", nlohmann::ordered_json::object()).value("title", std::string{"railodd report"}),
-                  data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+                  {data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)}};
     std::ostringstream out;
     write_html(page, out);
     return out.str();

@@ -63,6 +63,12 @@ public:
         out_ += b ? "true" : "false";
         return *this;
     }
+    // Text that is already JSON (a value built apart).
+    JsonText& raw(std::string_view json) {
+        comma();
+        out_ += json;
+        return *this;
+    }
     // A small value built as a tree.
     JsonText& value(const nlohmann::ordered_json& j) {
         comma();

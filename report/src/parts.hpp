@@ -88,9 +88,6 @@ private:
 // The map convert holds, as the lines read_map_lines() gives from its file.
 xodr_check::MapLines map_lines_of(const xodr::Map& map, const std::string& name);
 
-// Profile elements, kinds and OSM id lists (keys "kinds", "osm", "elements"
-// of the open document); each track's road pieces into tracks_out.
-void write_profile(JsonText& out, const odd::OddProfile& profile, const RoadData& roads, ojson& tracks_out);
 
 // The chart's chains: "all tracks end to end" and long chains joined at
 // track ends; longest first after the first.

@@ -9,6 +9,8 @@
 #include "railodd/odd/taxonomy.hpp"
 #include "railodd/util/errors.hpp"
 
+#include <optional>
+
 
 namespace railodd::report {
 
@@ -122,7 +124,15 @@ PageData page_data(const ReportOptions& o) {
     return page_data(o, {&profile, &report});
 }
 
-ojson report_data(const ReportOptions& o) { return ojson::parse(page_data(o).json); }
+ojson report_data(const ReportOptions& o) { return ojson::parse(page_data(o).json()); }
+
+std::string PageData::json() const {
+    std::string all;
+    for (const auto& p : parts) {
+        all += p;
+    }
+    return all;
+}
 
 PageData page_data(const ReportOptions& o, const Loaded& loaded) {
     const xodr_check::MapLines map = loaded.map ? detail::map_lines_of(*loaded.map, (o.map_dir / "map.xodr").string())
@@ -135,13 +145,31 @@ PageData page_data(const ReportOptions& o, const Loaded& loaded) {
     const ojson meta = meta_json(o, profile, play_file);
 
     PageData page{meta.at("title").get<std::string>(), {}};
-    detail::JsonText out(page.json);
+    std::string text;
+    detail::JsonText out(text);
     out.open('{').key("format").string("railodd_report_data").key("format_version").integer(1);
     out.key("meta").value(meta).key("bounds").value(roads.bounds_json());
     out.key("roads");
     roads.write_roads(out);
-    ojson tracks;
-    detail::write_profile(out, profile, roads, tracks);
+    std::optional<ProfileSection> own; // from the profile's elements, when the caller has no section
+    if (!loaded.section) {
+        std::vector<std::string> road_ids;
+        for (const auto& r : map.roads) {
+            road_ids.push_back(r.id);
+        }
+        own.emplace(profile, road_ids);
+        for (const auto& e : profile.elements) {
+            own->add(e);
+        }
+    }
+    ProfileSection& section = loaded.section ? *loaded.section : *own;
+    section.write_kinds(out);
+    out.key("elements").raw(""); // its value is the next part
+    page.parts.push_back(std::move(text));
+    text = std::string();
+    page.parts.push_back(section.take_rows());
+    const ojson tracks = section.tracks_json();
+    own.reset();
     out.key("summary").value(profile.summary).key("chains").value(detail::chains_json(profile, tracks));
     out.key("tracks").value(tracks);
     const detail::NodeFit nf = detail::node_fit(o.map_dir, report, roads, frame, loaded.track_nodes);
@@ -155,6 +183,7 @@ PageData page_data(const ReportOptions& o, const Loaded& loaded) {
     out.key("input").value(input_json(report)).key("scenarios");
     out.value(o.scenario_dir.empty() ? ojson(nullptr) : detail::scenario_section(o.scenario_dir, play_file, roads));
     out.close('}');
+    page.parts.push_back(std::move(text));
     return page;
 }
 

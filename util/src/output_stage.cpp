@@ -118,6 +118,7 @@ OutputStage::OutputStage(fs::path outdir) : outdir_(std::move(outdir)) {
         throw OutputError("''", "the output folder name is empty");
     }
     std::error_code ec;
+    created_ = !fs::exists(outdir_, ec);
     fs::create_directories(outdir_, ec);
     if (ec || !fs::is_directory(outdir_)) {
         throw OutputError(outdir_.string(), "cannot create output directory" + (ec ? ": " + ec.message() : ""));
@@ -153,6 +154,9 @@ OutputStage::~OutputStage() {
     if (lock_fd_ >= 0) {
         ::close(lock_fd_); // releases the flock
     }
+    if (!committed_ && created_) {
+        fs::remove(outdir_, ec); // the folder this run made, empty again: a failed run leaves nothing
+    }
 }
 
 fs::path OutputStage::staged_path(std::string_view name) {
@@ -175,6 +179,16 @@ fs::path OutputStage::staged_path(std::string_view name) {
 
 void OutputStage::write_text(std::string_view name, std::string_view content) {
     write_with(name, [&](std::ostream& out) { out.write(content.data(), static_cast<std::streamsize>(content.size())); });
+}
+
+fs::path OutputStage::scratch_path(std::string_view name) {
+    const fs::path dir = staging_ / ".scratch";
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) {
+        throw OutputError(dir.string(), "cannot create directory: " + ec.message());
+    }
+    return dir / fs::path(std::string{name}).filename();
 }
 
 void OutputStage::write_with(std::string_view name, const std::function<void(std::ostream&)>& write) {

@@ -32,6 +32,12 @@
       k.attrs.forEach((a, j) => { k.attrIndex[a] = j; });
     });
     D.kindIdx = kindIdx;
+    // A row lists its kind's attributes as known when it was written: pad
+    // the earlier, shorter ones so every view reads one column per attribute.
+    for (const e of D.elements) {
+      const n = D.kinds[e[0]].attrs.length;
+      while (e[7].length < n) e[7].push(null);
+    }
     D.attr = (e, name) => {
       const j = D.kinds[e[0]].attrIndex[name];
       return j == null ? undefined : e[7][j];

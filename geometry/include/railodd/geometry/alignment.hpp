@@ -65,6 +65,13 @@ std::vector<Pose> primitive_starts(const Alignment& alignment);
 // Arc length at the start of each primitive.
 std::vector<double> primitive_s(const Alignment& alignment);
 
+// Chainages in [s0, s1] where a polyline through the alignment stays within
+// max_sagitta (m) of it: s0, s1, every primitive joint between them, and in
+// each primitive's stretch evenly spaced stations whose chord sagitta
+// h^2 |k| / 8 is at most max_sagitta at the stretch's largest curvature
+// (none inside a line). Ascending; s0 == s1 gives one station.
+std::vector<double> chord_stations(const Alignment& alignment, double s0, double s1, double max_sagitta);
+
 struct Projection {
     double s = 0.0;        // arc length of the nearest point
     double offset = 0.0;   // signed lateral distance, left of the heading positive

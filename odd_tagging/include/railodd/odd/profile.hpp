@@ -95,6 +95,18 @@ struct OddProfile {
     std::vector<TrackEnd> track_ends; // by track; empty along a route (and in profiles written before them)
 };
 
+// Receives a network's profile as it is made (tag_network, tagger.hpp): the head (every
+// field but elements, unparsed and summary), the elements in profile order a
+// batch at a time (the sink may take them), then the tail (the head with
+// unparsed and summary; no elements).
+class ProfileSink {
+public:
+    virtual ~ProfileSink() = default;
+    virtual void begin(const OddProfile& head) = 0;
+    virtual void add(std::deque<TaggedElement>& batch) = 0;
+    virtual void end(const OddProfile& tail) = 0;
+};
+
 nlohmann::ordered_json to_json(const OddProfile& profile);
 // The same document as text, one element per line, without building the tree.
 std::string to_json_text(const OddProfile& profile);

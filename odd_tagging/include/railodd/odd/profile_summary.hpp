@@ -6,6 +6,7 @@
 #include "railodd/odd/profile.hpp"
 #include "railodd/odd/taxonomy.hpp"
 
+#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,23 @@ namespace railodd::odd {
 // value outside all bins too. Elements lacking the attribute count as "unknown";
 // speed limits without a number count under "kind: signals" / "kind: none".
 nlohmann::ordered_json summarize(const OddProfile& profile, const Taxonomy* taxonomy);
+
+// The same, element by element, for a profile that is never whole (a network
+// tagged a batch of tracks at a time): add() every element in profile order,
+// then json() with the profile's head (length_m, tracks, unparsed).
+class SummaryBuilder {
+public:
+    explicit SummaryBuilder(const Taxonomy* taxonomy);
+    SummaryBuilder(const SummaryBuilder&) = delete;
+    SummaryBuilder& operator=(const SummaryBuilder&) = delete;
+    ~SummaryBuilder();
+    void add(const TaggedElement& e);
+    nlohmann::ordered_json json(const OddProfile& head) const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 // The summary as aligned text (km with 2 decimals). Keys present in the
 // profile's own `summary` are shown as stored; missing ones are computed from

@@ -7,6 +7,8 @@
 #include "railodd/odd/taxonomy.hpp"
 #include "railodd/xodr/map_builder.hpp"
 
+#include <cstddef>
+#include <deque>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +20,15 @@ struct TaggerInput {
     const xodr::MapBuild& map;       // where each track went in map.xodr
 };
 
+// Tags the network a batch of tracks (graph edges) at a time, handing each
+// batch's elements, in order, to the sink: a national network's profile is
+// never held whole. The profile does not depend on the batch size
+// (`unparsed` is sorted by OSM ids, tag and value).
+inline constexpr std::size_t default_tracks_per_batch = 256;
+void tag_network(const TaggerInput& input, const Taxonomy& taxonomy, ProfileSink& sink,
+                 std::size_t tracks_per_batch = default_tracks_per_batch);
+
+// The same profile, whole.
 OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy);
 
 // The tags as <userData code="odd"> on the roads they belong to, one per

@@ -12,6 +12,7 @@
 #include <array>
 #include <filesystem>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 
 namespace railodd::odd {
 struct OddProfile;
+struct TaggedElement;
 }
 namespace railodd::xodr {
 struct Map;
@@ -38,21 +40,55 @@ struct ReportOptions {
     std::string map_name;               // how the map folder is named in the page; empty: map_dir
 };
 
+namespace detail {
+class JsonText;
+}
+
+// The page's share of the ODD profile (its element table, OSM id lists and
+// the tracks' road pieces), built element by element: convert feeds it as
+// it tags the network, a batch at a time, and never holds the profile whole.
+class ProfileSection {
+public:
+    // head: the profile's tracks and along_route; road_ids: the map's roads
+    // in order (the page's road indices).
+    ProfileSection(const odd::OddProfile& head, const std::vector<std::string>& road_ids);
+    ProfileSection(const ProfileSection&) = delete;
+    ProfileSection& operator=(const ProfileSection&) = delete;
+    ~ProfileSection();
+    void add(const odd::TaggedElement& e); // in profile order
+    // Keys "kinds" and "osm" into the open document.
+    void write_kinds(detail::JsonText& out) const;
+    // The value of "elements", moved out: no add() after it.
+    std::string take_rows();
+    // The value of "tracks": each track's road pieces.
+    nlohmann::ordered_json tracks_json() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
 // What a caller already holds (convert, before its outputs are in place):
 // used instead of reading odd_profile.json, report.json and map.xodr.
 struct Loaded {
+    // The profile; with `section`, only its head and tail (route, summary,
+    // track ends), the elements having gone into the section.
     const odd::OddProfile* profile = nullptr;
     const nlohmann::ordered_json* report = nullptr;
     const xodr::Map* map = nullptr; // null: map.xodr is read
     // The mapped track ways in the map's frame, one node list (x, y) per way
     // part; null: ingest.geojson is read.
     const std::vector<std::vector<std::array<double, 2>>>* track_nodes = nullptr;
+    ProfileSection* section = nullptr; // the profile's elements, when `profile` holds none
 };
 
-// The data document as JSON text, and the page's title.
+// The data document as JSON text, and the page's title. The text is kept in
+// parts, in order: the profile's element table (a national network's largest
+// part) is moved in whole, never copied or grown into a second buffer.
 struct PageData {
     std::string title;
-    std::string json;
+    std::vector<std::string> parts;
+    std::string json() const; // the parts joined
 };
 
 // Throws railodd::InputError naming the file that is missing or unreadable

@@ -3,6 +3,9 @@
 // the output directory and moved into place only when the command succeeds,
 // so a failed run leaves no half-written file behind.
 //
+// A run that fails before its commit leaves OUTDIR as it found it: a folder
+// it had to create is removed again.
+//
 // A run holds a lock on OUTDIR (flock on the folder) from start to commit: a
 // second run into the same folder is refused, and staging folders left by
 // killed runs are removed. The commit writes a journal (OUTDIR/.railodd-journal: the staging
@@ -31,6 +34,9 @@ public:
     // This and the writers may be called from several threads, one per file.
     // Throws InputError for a name that is not a file inside the folder.
     std::filesystem::path staged_path(std::string_view name);
+    // A working file of this run inside the staging folder: never moved into
+    // place, gone with the staging folder.
+    std::filesystem::path scratch_path(std::string_view name);
     void write_text(std::string_view name, std::string_view content);
     // Streams the output `name` straight into its staged file: large outputs
     // (a national network's profile runs to hundreds of MB) are never held
@@ -55,6 +61,7 @@ private:
     std::mutex names_mutex_;
     int lock_fd_ = -1;
     bool committed_ = false;
+    bool created_ = false; // OUTDIR did not exist: removed again, empty, if nothing is committed
 };
 
 // The staging folders' prefix inside an output folder.
