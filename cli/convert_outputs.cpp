@@ -13,8 +13,6 @@
 
 namespace railodd::cli {
 
-namespace fs = std::filesystem;
-
 namespace {
 
 std::filesystem::path taxonomy_path(const std::string& option) {
@@ -95,8 +93,8 @@ private:
 // The whole network's profile straight into its files, while map.xodr (and
 // the debug outputs) are written on a second thread: both only read the map.
 Profiled stream_profile(OutputStage& stage, const ConvertOptions& o, const ingest::IngestResult& r, Geometry& geo,
-                        const odd::TaggerInput& in, xodr::Revision revision, PhaseTimer& timer) {
-    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(o.taxonomy));
+                        const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
+                        PhaseTimer& timer) {
     std::future<void> map_written = std::async(o.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
         stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(in.map.map, revision, out, {}); });
         write_debug_outputs(stage, o.debug_outputs, r, geo);
@@ -118,8 +116,8 @@ Profiled stream_profile(OutputStage& stage, const ConvertOptions& o, const inges
 
 // The profile made whole: along a route, or carried into map.xodr's userData.
 Profiled whole_profile(OutputStage& stage, const ConvertOptions& o, const ingest::IngestResult& r, Geometry& geo,
-                       const odd::TaggerInput& in, xodr::Revision revision, PhaseTimer& timer) {
-    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(o.taxonomy));
+                       const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
+                       PhaseTimer& timer) {
     odd::OddProfile network = odd::tag_route(in, taxonomy);
     xodr::ExtraUserData odd_user_data; // the whole network's elements with each road, when asked for
     if (o.odd_user_data) {
@@ -154,9 +152,10 @@ Profiled profile_and_write(OutputStage& stage, const ConvertOptions& o, const in
     std::vector<geometry::IndexedAlignment>().swap(geo.indexed);
     timer.start("odd_tagging");
     const odd::TaggerInput in{map_input, map};
+    const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_path(o.taxonomy));
     const bool whole = o.odd_user_data || !o.from.empty() || r.relation;
-    return whole ? whole_profile(stage, o, r, geo, in, revision, timer)
-                 : stream_profile(stage, o, r, geo, in, revision, timer);
+    return whole ? whole_profile(stage, o, r, geo, in, taxonomy, revision, timer)
+                 : stream_profile(stage, o, r, geo, in, taxonomy, revision, timer);
 }
 
 void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
@@ -175,7 +174,7 @@ void write_page(OutputStage& stage, const std::string& outdir, Profiled& profile
     report::ReportOptions ro;
     ro.map_dir = stage.staged_path("map.xodr").parent_path();
     ro.map_name = outdir;
-    ro.fallback_taxonomy = fs::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml";
+    ro.fallback_taxonomy = taxonomy_path({});
     const report::PageData page =
         report::page_data(ro, {&profiled.profile, &report, &map, &track_nodes, profiled.section.get()});
     profiled.section.reset();

@@ -65,6 +65,10 @@ private:
     std::vector<std::pair<std::int64_t, Entry>> cells_;
 };
 
+// The relative curvature difference at a curved sample and its parallel
+// neighbour: the nearest other track whose foot lies 3-6 m beside it, within
+// 0.05 rad of its direction (either way). The track's own continuation
+// (another edge) is at its foot and is passed over.
 std::optional<double> parallel_difference(const Sample& q, const SampleGrid& grid,
                                           const std::vector<IndexedAlignment>& tracks) {
     std::vector<std::pair<double, const Entry*>> near;

@@ -44,17 +44,22 @@ const std::vector<std::string>& columns() {
     return c;
 }
 
+std::size_t KindIndex::of(const TaggedElement& e) {
+    const auto [it, added] = index_.try_emplace(e.element + '\n' + e.element_id, list_.size());
+    if (added) {
+        list_.emplace_back(e.element, e.element_id);
+    }
+    return it->second;
+}
+
 Kinds kinds_of(const std::deque<TaggedElement>& elements) {
+    KindIndex index;
     Kinds k;
     k.of.reserve(elements.size());
-    std::unordered_map<std::string, std::size_t> index; // by path and id, which a taxonomy pairs one to one
     for (const auto& e : elements) {
-        const auto [it, added] = index.try_emplace(e.element + '\n' + e.element_id, k.list.size());
-        if (added) {
-            k.list.emplace_back(e.element, e.element_id);
-        }
-        k.of.push_back(it->second);
+        k.of.push_back(index.of(e));
     }
+    k.list = index.list();
     return k;
 }
 

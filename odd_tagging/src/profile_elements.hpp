@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <deque>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -21,7 +22,19 @@ double metres(double value);
 // The rows' columns, written to the file so that a reader can check them.
 const std::vector<std::string>& columns();
 
-// The distinct kinds ([path, id]) in order of first use, and each element's index into them.
+// The distinct kinds ([path, id]) in order of first use, as the elements
+// come (a profile written a batch at a time numbers them the same way).
+class KindIndex {
+public:
+    std::size_t of(const TaggedElement& e); // the element's kind's index, added on first use
+    const std::vector<std::pair<std::string, std::string>>& list() const { return list_; }
+
+private:
+    std::vector<std::pair<std::string, std::string>> list_;
+    std::unordered_map<std::string, std::size_t> index_; // by path and id, which a taxonomy pairs one to one
+};
+
+// The same over a whole profile: the kinds, and each element's index into them.
 struct Kinds {
     std::vector<std::pair<std::string, std::string>> list;
     std::vector<std::size_t> of;

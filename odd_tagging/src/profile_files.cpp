@@ -12,7 +12,7 @@ namespace railodd::odd {
 
 ProfileFiles::ProfileFiles(std::ostream& json, std::ostream& geojson, std::ostream& csv, std::filesystem::path scratch)
     : json_(json), geojson_(geojson), csv_(csv), scratch_path_(std::move(scratch)),
-      rows_(scratch_path_, std::ios::binary | std::ios::trunc) {
+      rows_(scratch_path_, std::ios::binary | std::ios::trunc), kinds_(std::make_unique<profile_elements::KindIndex>()) {
     if (!rows_) {
         throw OutputError(scratch_path_.string(), "cannot open for writing");
     }
@@ -35,12 +35,8 @@ void ProfileFiles::begin(const OddProfile& head) {
 void ProfileFiles::add(std::deque<TaggedElement>& batch) {
     for (const TaggedElement& e : batch) {
         const bool first = elements_++ == 0;
-        const auto [it, added] = kind_of_.try_emplace(e.element + '\n' + e.element_id, kinds_.size());
-        if (added) {
-            kinds_.emplace_back(e.element, e.element_id);
-        }
         line_.assign(first ? "  " : ",\n  ");
-        profile_elements::append_row(line_, e, it->second);
+        profile_elements::append_row(line_, e, kinds_->of(e));
         rows_ << line_;
         line_.assign(first ? "" : ",\n");
         profile_text::append_feature(line_, e);
@@ -57,7 +53,7 @@ void ProfileFiles::end(const OddProfile& tail) {
     if (!rows_) {
         throw OutputError(scratch_path_.string(), "write failed");
     }
-    profile_text::write_json_head(head_, kinds_, json_);
+    profile_text::write_json_head(head_, kinds_->list(), json_);
     std::ifstream rows(scratch_path_, std::ios::binary);
     if (!rows) {
         throw OutputError(scratch_path_.string(), "cannot be read back");

@@ -136,10 +136,10 @@ namespace {
 
 // A stretch's line in the GeoJSON stays this close (m) to the fitted
 // centreline: a point per primitive joint and as many between as the
-// curvature needs (R 300 m: one every 7 m; lines: their ends). Every 20 m
+// curvature needs (R 300 m: one every 11 m; lines: their ends). Every 20 m
 // whatever the curve had left 17 cm at R 300 and sampled straights for
 // nothing.
-double max_sagitta_m = 0.05;
+constexpr double max_sagitta_m = 0.05;
 
 std::vector<TaggedAttribute> classified(const Taxonomy& t, const Element& element, std::vector<TaggedAttribute> attrs) {
     std::vector<TaggedAttribute> out;

@@ -60,7 +60,6 @@ std::string joined(const std::vector<std::string>& ids) {
 
 struct ProfileSection::State {
     std::unordered_map<std::string, long> road_index;
-    bool along_route = false;
     // Kinds in order of first appearance, each with the union of its
     // attribute names (in order of first appearance).
     std::vector<Kind> kinds;
@@ -143,7 +142,6 @@ ProfileSection::ProfileSection(const odd::OddProfile& head, const std::vector<st
     for (std::size_t i = 0; i < road_ids.size(); ++i) {
         s.road_index.emplace(road_ids[i], static_cast<long>(i));
     }
-    s.along_route = head.along_route;
     s.pieces.resize(head.tracks);
     s.start.assign(head.tracks, head.along_route ? 1e300 : 0.0);
     s.end.assign(head.tracks, 0.0);

@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iosfwd>
+#include <memory>
 #include <string>
-#include <unordered_map>
-#include <utility>
-#include <vector>
 
 namespace railodd::odd {
+
+namespace profile_elements {
+class KindIndex;
+}
 
 class ProfileFiles final : public ProfileSink {
 public:
@@ -34,8 +36,7 @@ private:
     std::filesystem::path scratch_path_;
     std::ofstream rows_;
     OddProfile head_;
-    std::vector<std::pair<std::string, std::string>> kinds_;
-    std::unordered_map<std::string, std::size_t> kind_of_; // path '\n' id -> index
+    std::unique_ptr<profile_elements::KindIndex> kinds_;
     std::size_t elements_ = 0;
     std::string line_, field_;
 };
