@@ -57,6 +57,7 @@ struct Options {
     int worst = 0;
     bool bound = false;
     int first = 1000; // seed of the first route
+    truth::Spacing spacing = truth::Spacing::osm;
 };
 
 // The arcs' Cramer-Rao bounds (relative sd of the curvature) against the
@@ -88,6 +89,7 @@ void run_sigma(const Options& opt, double sigma) {
         truth::TruthOptions o;
         o.sigma_m = sigma;
         o.outlier_fraction = outliers;
+        o.spacing = opt.spacing;
         const int seed = opt.first + i;
         const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), o);
         const auto t0 = std::chrono::steady_clock::now();
@@ -162,6 +164,9 @@ int main(int argc, char** argv) {
             o.worst = std::atoi(argv[++i]);
         } else if (a == "--first" && i + 1 < argc) {
             o.first = std::atoi(argv[++i]);
+        } else if (a == "--spacing" && i + 1 < argc) {
+            const std::string v = argv[++i];
+            o.spacing = v == "dense" ? truth::Spacing::dense : v == "sparse" ? truth::Spacing::sparse : truth::Spacing::osm;
         } else if (a == "--bound") {
             o.bound = true;
         } else {

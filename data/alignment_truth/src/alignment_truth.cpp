@@ -103,8 +103,8 @@ bool curved_at(const Alignment& a, const std::vector<double>& starts, double s) 
     return a.primitives[i].kind != geometry::PrimitiveKind::line;
 }
 
-// Mapped nodes: 50-250 m apart on straights (but one soon after a curve
-// begins, as mappers densify there), 5-40 m in curves; lateral scatter and
+// Mapped nodes at the options' spacing (on straights, one soon after a curve
+// begins, as mappers densify there); lateral scatter and
 // outliers across the line. The first and last nodes are never outliers: a
 // chain ends at a vertex (switch, buffer stop) that other ways share, whose
 // misplacement would bend them all.
@@ -121,11 +121,15 @@ void draw(TruthRoute& r, Rng& rng, const TruthOptions& o) {
         if (s >= total) {
             return;
         }
+        const bool sparse = o.spacing == Spacing::sparse;
         double step = 0.0;
-        if (curved_at(r.design, starts, s)) {
-            step = rng.uniform(5.0, 40.0);
+        if (o.spacing == Spacing::dense) {
+            step = rng.uniform(5.0, 15.0);
+        } else if (curved_at(r.design, starts, s)) {
+            step = sparse ? rng.uniform(25.0, 60.0) : rng.uniform(5.0, 40.0);
         } else {
-            step = std::min(rng.uniform(50.0, 250.0), next_curve_start(r.design, starts, s) - s + rng.uniform(2.0, 15.0));
+            step = std::min(sparse ? rng.uniform(100.0, 400.0) : rng.uniform(50.0, 250.0),
+                            next_curve_start(r.design, starts, s) - s + rng.uniform(2.0, 15.0));
         }
         s = std::min(total, s + step);
     }

@@ -6,6 +6,7 @@
 
 #include "chord_heading.hpp"
 #include "curvature_model.hpp"
+#include "design_fit.hpp"
 #include "design_selection.hpp"
 #include "least_squares.hpp"
 #include "outlier_nodes.hpp"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -411,6 +413,9 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     const std::vector<Point2> mapped = without_repeats(points);
     if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
+    }
+    if (std::getenv("RAILODD_DP")) {
+        return fit::fit_design(mapped, start, end, options);
     }
     // Outlier nodes are left out of the fit; its quality is still measured
     // on every node, so the report shows them.

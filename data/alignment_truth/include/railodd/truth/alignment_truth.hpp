@@ -13,8 +13,14 @@
 
 namespace railodd::truth {
 
+// How far apart the mapped nodes are: as OSM mappers draw track (50-250 m
+// on straights, 5-40 m in curves), densely (5-15 m everywhere, GPS-traced
+// ways) or sparsely (100-400 m on straights, 25-60 m in curves).
+enum class Spacing { osm, dense, sparse };
+
 struct TruthOptions {
     double sigma_m = 0.3;            // lateral scatter of the mapped nodes
+    Spacing spacing = Spacing::osm;
     double outlier_fraction = 0.01;  // nodes placed 3-10 m off the centreline
     double length_m = 8000.0;        // the design is at least this long
 };

@@ -1,0 +1,339 @@
+// The design search: hypotheses advance knot by knot along the chain, each
+// its cost as a quadratic in its current element's start state
+// (design_quadratic.hpp); at every candidate knot the best few open the
+// elements the design rules allow, and only the best hypotheses live on
+// (a beam, with a PELT-like margin). The winner's structure is then solved
+// exactly (solve_structure), which also recovers every knot's state.
+#include "design_dp.hpp"
+
+#include "design_quadratic.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <cstdio>
+#include <cstdlib>
+
+namespace railodd::geometry::fit {
+
+namespace {
+
+using design::Quad;
+using design::S;
+using design::Vec4;
+
+constexpr double tie_weight = 1e9; // per squared metre of the scaled state: a tie held to well under a millimetre
+
+struct Record {
+    int parent = -1;
+    double s = 0.0;
+    ElementKind kind = ElementKind::line;
+};
+
+struct Hypothesis {
+    Quad f;
+    double start = 0.0;
+    ElementKind kind = ElementKind::line;
+    int record = 0;
+    double penalties = 0.0; // included in f.c
+    double value = 0.0;     // minimum of f: data, priors and penalties so far
+    int seen = 0;           // nodes taken since the element opened
+};
+
+// A hypothesis younger than this many nodes is kept whatever its cost: its
+// curvature slope is not yet told by the data, and older rivals that fitted
+// the noise a little would crowd it out before it could show its merit.
+constexpr int fresh_nodes = 2;
+
+double min_length(ElementKind k, const DesignDpOptions& o) {
+    return k == ElementKind::line ? o.min_line_m : k == ElementKind::arc ? o.min_arc_m : o.min_transition_m;
+}
+
+double element_penalty(ElementKind k, const DesignDpOptions& o) {
+    return (k == ElementKind::arc ? 2.0 : 1.0) * o.parameter_penalty;
+}
+
+Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
+
+// Successors the design rules allow: a line and an arc are entered and left
+// through transitions; two transitions meet at zero curvature (a reverse
+// curve) or at an arc.
+int successors(ElementKind k, ElementKind* out) {
+    switch (k) {
+    case ElementKind::line:
+        out[0] = ElementKind::transition;
+        return 1;
+    case ElementKind::arc:
+        out[0] = ElementKind::transition;
+        return 1;
+    case ElementKind::transition:
+        out[0] = ElementKind::arc;
+        out[1] = ElementKind::line;
+        out[2] = ElementKind::transition;
+        return 3;
+    }
+    return 0;
+}
+
+// The design prior on a transition ending at its knot: its length against
+// the one its curvature change calls for.
+double transition_prior(const Quad& f, double length, const DesignDpOptions& o) {
+    if (o.transition_prior <= 0.0) {
+        return 0.0;
+    }
+    Vec4 x;
+    design::minimum(f, &x);
+    const double dk = std::abs(x(3) * (length / S)) / (S * S);
+    if (dk < 1e-5) {
+        return 0.0;
+    }
+    const double r = std::log(length / transition_length_for(dk));
+    return o.transition_prior * r * r;
+}
+
+class Search {
+public:
+    Search(const std::vector<FrameNode>& nodes, const DesignDpOptions& o) : n_(nodes), o_(o) {}
+
+    std::vector<FrameElement> run();
+
+private:
+    void seed();
+    void advance(double from, double to, std::size_t& next);
+    void spawn(double s);
+    void keep_best();
+    std::vector<FrameElement> best_path(double s1);
+
+    const std::vector<FrameNode>& n_;
+    const DesignDpOptions& o_;
+    std::vector<Record> records_;
+    std::vector<Hypothesis> live_;
+};
+
+void Search::seed() {
+    for (const ElementKind k : {ElementKind::line, ElementKind::transition, ElementKind::arc}) {
+        Hypothesis h;
+        h.f = design::empty_quad(design::first_free(k));
+        if (o_.start) {
+            design::add_tie(h.f, scaled(*o_.start), tie_weight);
+        }
+        h.start = o_.s0;
+        h.kind = k;
+        h.record = static_cast<int>(records_.size());
+        records_.push_back({-1, o_.s0, k});
+        h.penalties = element_penalty(k, o_);
+        h.f.c += h.penalties;
+        live_.push_back(std::move(h));
+    }
+}
+
+// Every live hypothesis takes the nodes in (from, to] and the curvature
+// prior over the step.
+void Search::advance(double from, double to, std::size_t& next) {
+    const std::size_t first = next;
+    while (next < n_.size() && n_[next].t <= to) {
+        ++next;
+    }
+    for (Hypothesis& h : live_) {
+        for (std::size_t i = first; i < next; ++i) {
+            design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
+        }
+        h.seen += static_cast<int>(next - first);
+        if (o_.curvature_weight > 0.0) {
+            design::add_curvature(h.f, (from - h.start) / S, (to - h.start) / S, o_.curvature_weight);
+        }
+        if (next > first || o_.curvature_weight > 0.0) {
+            h.value = design::minimum(h.f);
+        }
+    }
+}
+
+void Search::spawn(double s) {
+    // Every child is built and valued exactly: a line or a second transition
+    // must meet the knot at zero curvature, which the parent's own minimum
+    // does not tell (ranking by it lost the way back to straight track).
+    std::vector<Hypothesis> children[3];
+    std::vector<int> parents[3];
+    for (const Hypothesis& h : live_) {
+        if (s - h.start < min_length(h.kind, o_) - 1e-9) {
+            continue;
+        }
+        ElementKind next[3];
+        const int m = successors(h.kind, next);
+        const Quad knot = design::to_knot(h.f, (s - h.start) / S);
+        const double prior = h.kind == ElementKind::transition ? transition_prior(h.f, s - h.start, o_) : 0.0;
+        for (int j = 0; j < m; ++j) {
+            Hypothesis g;
+            g.f = knot;
+            const ElementKind kind = next[j];
+            if (!design::open_element(g.f, kind, h.kind == ElementKind::transition && kind == ElementKind::transition)) {
+                continue;
+            }
+            g.penalties = element_penalty(kind, o_) + prior;
+            g.f.c += g.penalties;
+            g.start = s;
+            g.kind = kind;
+            g.value = design::minimum(g.f);
+            children[static_cast<int>(kind)].push_back(std::move(g));
+            parents[static_cast<int>(kind)].push_back(h.record);
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        std::vector<std::size_t> order(children[k].size());
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            order[i] = i;
+        }
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return children[k][a].value < children[k][b].value; });
+        // The best child of each parent element (kind and start knot), the
+        // `spawn` best such: children of one family differ little in state,
+        // while another family's (a long transition against a short one
+        // after a line) may reach a curvature the next nodes call for even
+        // if it costs more now (CPOP keeps every cost that is least for
+        // some state; this keeps a few that differ).
+        std::vector<std::pair<ElementKind, double>> families;
+        for (std::size_t j = 0; j < order.size() && families.size() < o_.spawn; ++j) {
+            const Record& parent = records_[static_cast<std::size_t>(parents[k][order[j]])];
+            const std::pair<ElementKind, double> family{parent.kind, parent.s};
+            if (std::find(families.begin(), families.end(), family) != families.end()) {
+                continue;
+            }
+            families.push_back(family);
+            Hypothesis& g = children[k][order[j]];
+            g.record = static_cast<int>(records_.size());
+            records_.push_back({parents[k][order[j]], s, g.kind});
+            live_.push_back(std::move(g));
+        }
+    }
+}
+
+// The beam: the best hypotheses, none more than a margin above the best.
+void Search::keep_best() {
+    std::stable_sort(live_.begin(), live_.end(), [](const Hypothesis& a, const Hypothesis& b) { return a.value < b.value; });
+    const double margin = o_.prune_margin >= 0.0 ? o_.prune_margin : 4.0 * o_.parameter_penalty + 20.0;
+    const double worst = live_.front().value + margin;
+    std::size_t kept = 0, old = 0;
+    std::vector<std::pair<std::pair<ElementKind, double>, std::size_t>> per_knot;
+    for (std::size_t i = 0; i < live_.size(); ++i) {
+        Hypothesis& h = live_[i];
+        if (h.value > worst && kept > 0) {
+            break;
+        }
+        const bool fresh = h.seen < fresh_nodes;
+        if (!fresh && old >= o_.beam) {
+            continue;
+        }
+        // Histories ending in the same element (kind and start) compete for
+        // `spawn` places only: the optimal-partitioning recursion keeps the
+        // best one per knot and kind.
+        const std::pair<ElementKind, double> key{h.kind, h.start};
+        auto it = std::find_if(per_knot.begin(), per_knot.end(), [&](const auto& e) { return e.first == key; });
+        if (it == per_knot.end()) {
+            per_knot.push_back({key, 0});
+            it = per_knot.end() - 1;
+        }
+        if (it->second >= o_.spawn) {
+            continue;
+        }
+        ++it->second;
+        old += fresh ? 0 : 1;
+        if (kept != i) {
+            live_[kept] = std::move(h);
+        }
+        ++kept;
+    }
+    live_.resize(kept);
+}
+
+std::vector<FrameElement> Search::best_path(double s1) {
+    double best = std::numeric_limits<double>::infinity();
+    int at = -1;
+    for (const Hypothesis& h : live_) {
+        double v = h.value;
+        if (o_.end) {
+            Quad g = design::to_knot(h.f, (s1 - h.start) / S);
+            design::add_tie(g, scaled(*o_.end), tie_weight);
+            v = design::minimum(g);
+        }
+        if (v < best) {
+            best = v;
+            at = h.record;
+        }
+    }
+    std::vector<FrameElement> path;
+    if (std::getenv("DPDEBUG")) std::fprintf(stderr, "search best %.3f live %zu records %zu\n", best, live_.size(), records_.size());
+    double end = s1;
+    for (int r = at; r >= 0; r = records_[static_cast<std::size_t>(r)].parent) {
+        const Record& rec = records_[static_cast<std::size_t>(r)];
+        path.push_back({rec.kind, rec.s, end, 0.0, 0.0});
+        end = rec.s;
+    }
+    std::reverse(path.begin(), path.end());
+    return path;
+}
+
+std::vector<FrameElement> Search::run() {
+    seed();
+    const double span = o_.s1 - o_.s0;
+    const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(span / o_.knot_step_m - 1e-9)));
+    std::size_t next = 0;
+    while (next < n_.size() && n_[next].t < o_.s0) {
+        ++next;
+    }
+    // Nodes before the range (none where s0 is the first node's chainage) count at its start.
+    for (Hypothesis& h : live_) {
+        for (std::size_t i = 0; i < next; ++i) {
+            design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
+        }
+    }
+    double from = o_.s0;
+    for (std::size_t k = 1; k <= steps; ++k) {
+        const double to = k == steps ? o_.s1 : o_.s0 + static_cast<double>(k) * o_.knot_step_m;
+        const std::size_t before = next;
+        advance(from, to, next);
+        if (k < steps && next > before) {
+            spawn(to);
+            keep_best();
+            if (std::getenv("DPAT") && std::abs(to - std::atof(std::getenv("DPAT"))) < 40) {
+                std::fprintf(stderr, "at %.0f:", to);
+                for (auto& h : live_) {
+                    const Record* r = &records_[h.record];
+                    std::fprintf(stderr, " [%d@%.0f<-", (int)h.kind, h.start);
+                    if (r->parent >= 0) { const Record& p = records_[r->parent]; std::fprintf(stderr, "%d@%.0f", (int)p.kind, p.s); }
+                    std::fprintf(stderr, " %.1f s%d]", h.value, h.seen);
+                }
+                std::fprintf(stderr, "\n");
+            }
+        }
+        from = to;
+    }
+    // Nodes past the range count at its end.
+    for (Hypothesis& h : live_) {
+        for (std::size_t i = next; i < n_.size(); ++i) {
+            design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
+        }
+        h.value = design::minimum(h.f);
+    }
+    return best_path(o_.s1);
+}
+
+} // namespace
+
+double transition_length_for(double curvature) {
+    const double r = 1.0 / std::max(std::abs(curvature), 1e-6);
+    const double v = std::min(250.0, std::sqrt(r * 250.0 / 11.8));
+    return std::clamp(0.45 * v, 20.0, 250.0);
+}
+
+FrameDesign design_dp(const std::vector<FrameNode>& nodes, const DesignDpOptions& o) {
+    if (nodes.empty() || !(o.s1 > o.s0) || !(o.knot_step_m > 0.0)) {
+        throw std::invalid_argument("design_dp: no nodes or an empty chainage range");
+    }
+    std::vector<FrameNode> sorted = nodes;
+    std::stable_sort(sorted.begin(), sorted.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
+    Search search(sorted, o);
+    return refine_structure(sorted, solve_structure(sorted, search.run(), o), o);
+}
+
+} // namespace railodd::geometry::fit

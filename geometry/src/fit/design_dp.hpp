@@ -1,0 +1,85 @@
+#pragma once
+// The railway's design read from mapped nodes by an L0-penalised
+// segmentation: optimal partitioning (Jackson et al. 2005) in the continuous
+// form of CPOP (Fearnhead, Maidstone & Letchford 2019), lifted from
+// piecewise-linear means to the G2 design of a railway, searched
+// sequentially with a beam. It works in a developed frame (reference_line.hpp):
+// a node is a chainage t along a reference line and a lateral coordinate z
+// whose second derivative along t is the design's curvature, so a design is a
+// C2 piecewise cubic z(t) whose curvature z'' is continuous and piecewise
+// linear: zero on a line, constant on an arc, linear on a transition.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+enum class ElementKind : unsigned char { line, transition, arc };
+
+struct FrameNode {
+    double t = 0.0; // chainage along the reference
+    double z = 0.0; // developed lateral coordinate
+    double w = 1.0; // weight of its squared residual: 1 / sigma^2 times its robust factor
+};
+
+// State of the design at a chainage: lateral coordinate, heading (radians,
+// relative to the reference's start heading) and curvature.
+struct FrameState {
+    double z = 0.0;
+    double dz = 0.0;
+    double k = 0.0;
+};
+
+struct FrameElement {
+    ElementKind kind = ElementKind::line;
+    double s0 = 0.0, s1 = 0.0; // chainages of its ends
+    double k0 = 0.0, k1 = 0.0; // curvature at its ends
+};
+
+struct DesignDpOptions {
+    double s0 = 0.0, s1 = 0.0; // the design spans [s0, s1]
+    double knot_step_m = 5.0;  // candidate knots every this far
+    // L0 penalty per parameter, in units of the cost (sum w r^2): every
+    // element has its length, an arc also its curvature (a transition's
+    // slope follows from the curvatures at its ends).
+    double parameter_penalty = 10.0;
+    double min_line_m = 10.0, min_transition_m = 10.0, min_arc_m = 10.0;
+    double curvature_weight = 0.0; // cost per metre per (1/m)^2: a weak pull to straight
+    // Design prior: a transition's length against the one its curve's
+    // radius calls for (transition_length_for); cost per squared log ratio.
+    double transition_prior = 0.0;
+    std::size_t beam = 48;  // live hypotheses kept
+    std::size_t spawn = 3;  // parent elements each new element may follow at a knot, and histories kept per element
+    double prune_margin = -1.0; // hypotheses this far above the best are dropped; < 0: 4 penalties + 20
+    std::optional<FrameState> start, end; // tied ends
+};
+
+struct FrameDesign {
+    FrameState start;
+    std::vector<FrameElement> elements;
+    double cost = 0.0; // data cost plus penalties
+    double data_cost = 0.0;
+};
+
+// Transition length (m) a railway designer gives a curve of this curvature:
+// design speed from 150 mm cant plus 100 mm deficiency, about 0.45 m per km/h.
+double transition_length_for(double curvature);
+
+// Local search on a design: knots moved and elements merged away while the
+// exact cost falls (design_refine.cpp).
+FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const FrameDesign& design,
+                             const DesignDpOptions& options);
+
+// z of the design at chainage t (its first or last element extended beyond its ends).
+double frame_z(const FrameDesign& design, double t);
+
+// Nodes in any order; at least one. Throws std::invalid_argument for an
+// empty range or no nodes.
+FrameDesign design_dp(const std::vector<FrameNode>& nodes, const DesignDpOptions& options);
+
+// The cost of one given structure (kinds and knots), solved exactly: what
+// the search approximates. Elements' curvatures are ignored (solved for).
+FrameDesign solve_structure(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& structure,
+                            const DesignDpOptions& options);
+
+} // namespace railodd::geometry::fit

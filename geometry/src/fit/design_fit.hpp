@@ -1,0 +1,19 @@
+#pragma once
+// One chain's design, whole: a reference line, the design search in its
+// frame (design_dp.hpp), then again with that design as the reference; the
+// node noise re-estimated from each pass's residuals and the nodes
+// reweighted robustly. See docs/geometry.md.
+#include "least_squares.hpp"
+#include "railodd/geometry/fit_alignment.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+// p: distinct nodes in order (at least 2). options.noise_sigma_m > 0 fixes
+// the noise; else it is estimated.
+FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
+                     const FitOptions& options);
+
+} // namespace railodd::geometry::fit

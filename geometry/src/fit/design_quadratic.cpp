@@ -1,0 +1,220 @@
+#include "design_quadratic.hpp"
+
+#include <cmath>
+
+namespace railodd::geometry::fit::design {
+
+namespace {
+
+// Keeps every variable's system positive definite before data reaches it
+// (a fresh transition's slope): 1e-10 of a squared metre.
+constexpr double ridge = 1e-10;
+
+int variables(unsigned free, int* idx) {
+    int d = 0;
+    for (int i = 0; i < 4; ++i) {
+        if (free & (1u << i)) {
+            idx[d++] = i;
+        }
+    }
+    return d;
+}
+
+// Coordinate i is no variable any more: fixed at zero.
+void restrict_to_zero(Quad& f, int i) {
+    f.P.row(i).setZero();
+    f.P.col(i).setZero();
+    f.q(i) = 0.0;
+    f.free &= ~(1u << i);
+}
+
+} // namespace
+
+Mat4 flow(double u) {
+    Mat4 F;
+    F << 1.0, u, 0.5 * u * u, u * u * u / 6.0, //
+        0.0, 1.0, u, 0.5 * u * u,              //
+        0.0, 0.0, 1.0, u,                      //
+        0.0, 0.0, 0.0, 1.0;
+    return F;
+}
+
+Quad empty_quad(unsigned free) {
+    Quad f;
+    f.free = free;
+    for (int i = 0; i < 4; ++i) {
+        if (free & (1u << i)) {
+            f.P(i, i) = ridge;
+        }
+    }
+    return f;
+}
+
+void add_row(Quad& f, const Vec4& h, double w, double target) {
+    Vec4 m = h;
+    for (int i = 0; i < 4; ++i) {
+        if (!(f.free & (1u << i))) {
+            m(i) = 0.0;
+        }
+    }
+    f.P.noalias() += (w * m) * m.transpose();
+    f.q += (w * target) * m;
+    f.c += w * target * target;
+}
+
+void add_curvature(Quad& f, double a, double b, double weight) {
+    // k = (x2 + x3 u) / S^2 and ds = S du: integral of k^2 ds is
+    // (x2^2 (b-a) + x2 x3 (b^2-a^2) + x3^2 (b^3-a^3)/3) / S^3.
+    const double w = weight / (S * S * S);
+    if (f.free & 4u) {
+        f.P(2, 2) += w * (b - a);
+    }
+    if ((f.free & 4u) && (f.free & 8u)) {
+        f.P(2, 3) += w * 0.5 * (b * b - a * a);
+        f.P(3, 2) += w * 0.5 * (b * b - a * a);
+    }
+    if (f.free & 8u) {
+        f.P(3, 3) += w * (b * b * b - a * a * a) / 3.0;
+    }
+}
+
+void add_tie(Quad& f, const Vec4& target, double w) {
+    for (int i = 0; i < 3; ++i) {
+        if (f.free & (1u << i)) {
+            f.P(i, i) += w;
+            f.q(i) += w * target(i);
+        }
+        f.c += w * target(i) * target(i);
+    }
+}
+
+double minimum(const Quad& f, Vec4* arg) {
+    int idx[4];
+    const int d = variables(f.free, idx);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> A(d, d);
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> b(d);
+    for (int i = 0; i < d; ++i) {
+        b(i) = f.q(idx[i]);
+        for (int j = 0; j < d; ++j) {
+            A(i, j) = f.P(idx[i], idx[j]);
+        }
+    }
+    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> x = A.ldlt().solve(b);
+    if (arg) {
+        arg->setZero();
+        for (int i = 0; i < d; ++i) {
+            (*arg)(idx[i]) = x(i);
+        }
+    }
+    return f.c - b.dot(x);
+}
+
+Quad to_knot(const Quad& f, double u, KnotMap* map) {
+    const Mat4 F = flow(u);
+    Quad g;
+    if (map) {
+        map->free = f.free;
+        map->length = u;
+    }
+    if (f.free == 15u) {
+        // Every start coordinate free: (knot state, g) is the start state
+        // moved by an invertible flow; then g is minimised out (Schur).
+        const Mat4 Fi = flow(-u);
+        const Mat4 P1 = Fi.transpose() * f.P * Fi;
+        const Vec4 q1 = Fi.transpose() * f.q;
+        const double p33 = P1(3, 3);
+        g.P.topLeftCorner<3, 3>() = P1.topLeftCorner<3, 3>() - P1.block<3, 1>(0, 3) * P1.block<1, 3>(3, 0) / p33;
+        g.q.head<3>() = q1.head<3>() - P1.block<3, 1>(0, 3) * (q1(3) / p33);
+        g.c = f.c - q1(3) * q1(3) / p33;
+        g.free = 7u;
+        if (map) {
+            map->p3 = P1.row(3).transpose();
+            map->q3 = q1(3);
+        }
+        return g;
+    }
+    // d variables map one to one onto the first d knot coordinates (a line
+    // ends at zero curvature, so its knot has two).
+    int cols[4];
+    const int d = variables(f.free, cols);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> M(d, d), Pv(d, d);
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> qv(d);
+    for (int i = 0; i < d; ++i) {
+        qv(i) = f.q(cols[i]);
+        for (int j = 0; j < d; ++j) {
+            M(i, j) = F(i, cols[j]);
+            Pv(i, j) = f.P(cols[i], cols[j]);
+        }
+    }
+    const auto Mi = M.inverse();
+    const auto Py = (Mi.transpose() * Pv * Mi).eval();
+    const auto qy = (Mi.transpose() * qv).eval();
+    for (int i = 0; i < d; ++i) {
+        g.q(i) = qy(i);
+        for (int j = 0; j < d; ++j) {
+            g.P(i, j) = Py(i, j);
+        }
+    }
+    g.c = f.c;
+    g.free = d == 2 ? 3u : 7u;
+    return g;
+}
+
+Vec4 start_from_knot(const KnotMap& map, const Vec4& y) {
+    if (map.free == 15u) {
+        Vec4 end = y;
+        end(3) = (map.q3 - map.p3.head<3>().dot(y.head<3>())) / map.p3(3);
+        return flow(-map.length) * end;
+    }
+    int cols[4];
+    const int d = variables(map.free, cols);
+    const Mat4 F = flow(map.length);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> M(d, d);
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> yv(d);
+    for (int i = 0; i < d; ++i) {
+        yv(i) = y(i);
+        for (int j = 0; j < d; ++j) {
+            M(i, j) = F(i, cols[j]);
+        }
+    }
+    const auto xi = M.partialPivLu().solve(yv).eval();
+    Vec4 x = Vec4::Zero();
+    for (int i = 0; i < d; ++i) {
+        x(cols[i]) = xi(i);
+    }
+    return x;
+}
+
+bool open_element(Quad& f, ElementKind kind, bool after_transition) {
+    switch (kind) {
+    case ElementKind::line:
+        if (f.free & 4u) {
+            restrict_to_zero(f, 2);
+        }
+        return true;
+    case ElementKind::arc:
+        return (f.free & 4u) != 0;
+    case ElementKind::transition:
+        if (after_transition && (f.free & 4u)) {
+            restrict_to_zero(f, 2);
+        }
+        f.free |= 8u;
+        f.P(3, 3) = ridge;
+        return true;
+    }
+    return false;
+}
+
+unsigned first_free(ElementKind kind) {
+    switch (kind) {
+    case ElementKind::line:
+        return 3u;
+    case ElementKind::arc:
+        return 7u;
+    case ElementKind::transition:
+        return 15u;
+    }
+    return 0u;
+}
+
+} // namespace railodd::geometry::fit::design
