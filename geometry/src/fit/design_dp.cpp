@@ -23,8 +23,6 @@ using design::Quad;
 using design::S;
 using design::Vec4;
 
-constexpr double tie_weight = 1e9; // per squared metre of the scaled state: a tie held to well under a millimetre
-
 struct Record {
     int parent = -1;
     double s = 0.0;
@@ -50,12 +48,6 @@ double min_length(ElementKind k, const DesignDpOptions& o) {
     return k == ElementKind::line ? o.min_line_m : k == ElementKind::arc ? o.min_arc_m : o.min_transition_m;
 }
 
-double element_penalty(ElementKind k, const DesignDpOptions& o) {
-    return (k == ElementKind::arc ? 2.0 : 1.0) * o.parameter_penalty;
-}
-
-Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
-
 // Successors the design rules allow: a line and an arc are entered and left
 // through transitions; two transitions meet at zero curvature (a reverse
 // curve) or at an arc.
@@ -74,22 +66,6 @@ int successors(ElementKind k, ElementKind* out) {
         return 3;
     }
     return 0;
-}
-
-// The design prior on a transition ending at its knot: its length against
-// the one its curvature change calls for.
-double transition_prior(const Quad& f, double length, const DesignDpOptions& o) {
-    if (o.transition_prior <= 0.0) {
-        return 0.0;
-    }
-    Vec4 x;
-    design::minimum(f, &x);
-    const double dk = std::abs(x(3) * (length / S)) / (S * S);
-    if (dk < 1e-5) {
-        return 0.0;
-    }
-    const double r = std::log(length / transition_length_for(dk));
-    return o.transition_prior * r * r;
 }
 
 class Search {
@@ -116,13 +92,13 @@ void Search::seed() {
         Hypothesis h;
         h.f = design::empty_quad(design::first_free(k));
         if (o_.start) {
-            design::add_tie(h.f, scaled(*o_.start), tie_weight);
+            design::add_tie(h.f, design::scaled(*o_.start), design::tie_weight);
         }
         h.start = o_.s0;
         h.kind = k;
         h.record = static_cast<int>(records_.size());
         records_.push_back({-1, o_.s0, k});
-        h.penalties = element_penalty(k, o_);
+        h.penalties = design::element_penalty(k, o_, true);
         h.f.c += h.penalties;
         live_.push_back(std::move(h));
     }
@@ -162,7 +138,7 @@ void Search::spawn(double s) {
         ElementKind next[3];
         const int m = successors(h.kind, next);
         const Quad knot = design::to_knot(h.f, (s - h.start) / S);
-        const double prior = h.kind == ElementKind::transition ? transition_prior(h.f, s - h.start, o_) : 0.0;
+        const double prior = h.kind == ElementKind::transition ? design::transition_prior(h.f, s - h.start, o_) : 0.0;
         for (int j = 0; j < m; ++j) {
             Hypothesis g;
             g.f = knot;
@@ -170,7 +146,7 @@ void Search::spawn(double s) {
             if (!design::open_element(g.f, kind, h.kind == ElementKind::transition && kind == ElementKind::transition)) {
                 continue;
             }
-            g.penalties = element_penalty(kind, o_) + prior;
+            g.penalties = design::element_penalty(kind, o_, false) + prior;
             g.f.c += g.penalties;
             g.start = s;
             g.kind = kind;
@@ -253,7 +229,7 @@ std::vector<FrameElement> Search::best_path(double s1) {
         double v = h.value;
         if (o_.end) {
             Quad g = design::to_knot(h.f, (s1 - h.start) / S);
-            design::add_tie(g, scaled(*o_.end), tie_weight);
+            design::add_tie(g, design::scaled(*o_.end), design::tie_weight);
             v = design::minimum(g);
         }
         if (v < best) {

@@ -1,5 +1,6 @@
 #include "design_fit.hpp"
 
+#include "curvature_model.hpp"
 #include "design_dp.hpp"
 #include "outlier_nodes.hpp"
 #include "reference_line.hpp"
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace railodd::geometry::fit {
 
@@ -16,6 +18,7 @@ constexpr double reference_step_m = 2.0;
 constexpr double smoothing_m = 30.0;
 
 struct Pass {
+    FrameDesign design;
     Alignment alignment;
     std::size_t parameters = 0;
     std::vector<double> distance; // of every node to the design, in the frame
@@ -78,9 +81,12 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
         o.end = frame_state(ref, *end, &o.s1);
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
-    o.parameter_penalty = 2.0 * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
+    o.parameter_penalty = (std::getenv("PEN") ? std::atof(std::getenv("PEN")) : 2.0) * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
+    o.curvature_weight = std::getenv("CW") ? std::atof(std::getenv("CW")) : 0.0;
+    o.transition_prior = std::getenv("TP") ? std::atof(std::getenv("TP")) : 0.0;
     const FrameDesign d = design_dp(nodes, o);
     Pass pass;
+    pass.design = d;
     pass.alignment = to_alignment(ref, d);
     pass.parameters = 3;
     for (const auto& e : d.elements) {
@@ -94,6 +100,67 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
 
 // The first pass's noise and weights: the outlier scan's (outlier_nodes.hpp),
 // spikes left out, where enough nodes lie close together to tell a scale.
+// The design as clothoids whose knots keep its structure (lines at zero
+// curvature, an arc's two knots one variable, a transition meeting a line or
+// another transition at zero), every length free: what the exact polish
+// moves.
+CurvatureModel structure_model(const Pass& pass, const std::optional<Pose>& start, const std::optional<Pose>& end) {
+    const auto& el = pass.design.elements;
+    CurvatureModel m;
+    m.start = pass.alignment.start;
+    m.start_free = !start;
+    const auto is = [&](std::size_t j, ElementKind k) { return j < el.size() && el[j].kind == k; };
+    int var = -1;
+    if (is(0, ElementKind::line)) {
+        m.knot_var.push_back(-1);
+        m.knot_fixed.push_back(0.0);
+    } else if (start) {
+        m.knot_var.push_back(-1);
+        m.knot_fixed.push_back(start->curvature);
+    } else {
+        m.curv.push_back(el[0].k0);
+        var = static_cast<int>(m.curv.size()) - 1;
+        m.knot_var.push_back(var);
+        m.knot_fixed.push_back(0.0);
+    }
+    for (std::size_t j = 0; j < el.size(); ++j) {
+        const double len = std::max(el[j].s1 - el[j].s0, 0.5);
+        const bool last = j + 1 == el.size();
+        if (el[j].kind == ElementKind::line || is(j + 1, ElementKind::line) ||
+            (el[j].kind == ElementKind::transition && is(j + 1, ElementKind::transition))) {
+            m.push_segment(len, true, -1, 0.0);
+        } else if (last && end) {
+            m.push_segment(len, true, -1, end->curvature);
+        } else if (el[j].kind == ElementKind::arc && m.knot_var.back() >= 0) {
+            m.push_segment(len, true, m.knot_var.back());
+        } else {
+            m.curv.push_back(el[j].k1);
+            m.push_segment(len, true, static_cast<int>(m.curv.size()) - 1);
+        }
+    }
+    return m;
+}
+
+// A few Levenberg-Marquardt steps on exact clothoids with the structure
+// fixed: what the frame's small-angle model left (second order in the
+// offsets, the lengths along a curve).
+Alignment polish(const Pass& pass, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
+                 const std::optional<Pose>& start, const std::optional<Pose>& end) {
+    CurvatureModel m = structure_model(pass, start, end);
+    SolveOptions so;
+    so.sigma_m = sigma;
+    so.pin_first = !start;
+    so.pin_last = true;
+    so.end = end;
+    so.max_iterations = 8;
+    so.geodesic_acceleration = true;
+    for (const double w : weight) {
+        so.point_scale.push_back(std::sqrt(w));
+    }
+    const SolveReport r = solve(m, p, so);
+    return r.end_met ? m.to_alignment() : pass.alignment;
+}
+
 double first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
     const OutlierScan scan = find_outlier_nodes(p);
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -122,7 +189,7 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
         }
     }
     FitResult r;
-    r.alignment = std::move(pass.alignment);
+    r.alignment = std::getenv("NOPOLISH") ? pass.alignment : polish(pass, p, weight, sigma, start, end);
     std::vector<Point> all;
     for (const auto& q : p) {
         all.push_back({q.x, q.y});

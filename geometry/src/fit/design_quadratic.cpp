@@ -205,6 +205,27 @@ bool open_element(Quad& f, ElementKind kind, bool after_transition) {
     return false;
 }
 
+Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
+
+double element_penalty(ElementKind k, const DesignDpOptions& o, bool first) {
+    const double params = k == ElementKind::arc ? 2.0 : (k == ElementKind::transition && first && !o.start) ? 2.0 : 1.0;
+    return params * o.parameter_penalty;
+}
+
+double transition_prior(const Quad& f, double length, const DesignDpOptions& o) {
+    if (o.transition_prior <= 0.0) {
+        return 0.0;
+    }
+    Vec4 x;
+    minimum(f, &x);
+    const double dk = std::abs(x(3) * (length / S)) / (S * S);
+    if (dk < 1e-5) {
+        return 0.0;
+    }
+    const double r = std::log(length / transition_length_for(dk));
+    return o.transition_prior * r * r;
+}
+
 unsigned first_free(ElementKind kind) {
     switch (kind) {
     case ElementKind::line:

@@ -74,4 +74,19 @@ bool open_element(Quad& knot, ElementKind kind, bool after_transition);
 // Free coordinates of the first element of a design.
 unsigned first_free(ElementKind kind);
 
+// A tie holds the scaled state to well under a millimetre.
+constexpr double tie_weight = 1e9;
+
+Vec4 scaled(const FrameState& s);
+
+// The L0 penalty of opening an element: one parameter for its length, one
+// more for an arc's curvature, and one more for a first transition's free
+// start curvature (a chain that does not start tied starts straight or in a
+// curve, seldom inside a transition).
+double element_penalty(ElementKind kind, const DesignDpOptions& o, bool first);
+
+// The design prior on a transition of this cost and length ending at its
+// knot: its length against the one its curvature change calls for.
+double transition_prior(const Quad& f, double length, const DesignDpOptions& o);
+
 } // namespace railodd::geometry::fit::design

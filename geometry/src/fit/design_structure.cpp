@@ -18,28 +18,6 @@ using design::Quad;
 using design::S;
 using design::Vec4;
 
-constexpr double tie_weight = 1e9;
-
-Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
-
-double penalty(ElementKind k, const DesignDpOptions& o) {
-    return (k == ElementKind::arc ? 2.0 : 1.0) * o.parameter_penalty;
-}
-
-double prior(const Quad& f, double length, const DesignDpOptions& o) {
-    if (o.transition_prior <= 0.0) {
-        return 0.0;
-    }
-    Vec4 x;
-    design::minimum(f, &x);
-    const double dk = std::abs(x(3) * (length / S)) / (S * S);
-    if (dk < 1e-5) {
-        return 0.0;
-    }
-    const double r = std::log(length / transition_length_for(dk));
-    return o.transition_prior * r * r;
-}
-
 // z of the design at chainage t, from the element's start state x.
 double z_at(const Vec4& x, double u) { return design::node_row(u).dot(x); }
 
@@ -69,9 +47,9 @@ FrameDesign solve_structure(const std::vector<FrameNode>& in, const std::vector<
     std::vector<design::KnotMap> maps(st.size());
     Quad f = design::empty_quad(design::first_free(st.front().kind));
     if (o.start) {
-        design::add_tie(f, scaled(*o.start), tie_weight);
+        design::add_tie(f, design::scaled(*o.start), design::tie_weight);
     }
-    f.c += penalty(st.front().kind, o);
+    f.c += design::element_penalty(st.front().kind, o, true);
     std::size_t next = 0;
     for (std::size_t j = 0;; ++j) {
         const FrameElement& e = st[j];
@@ -85,13 +63,13 @@ FrameDesign solve_structure(const std::vector<FrameNode>& in, const std::vector<
         if (last) {
             break;
         }
-        const double extra = e.kind == ElementKind::transition ? prior(f, e.s1 - e.s0, o) : 0.0;
+        const double extra = e.kind == ElementKind::transition ? design::transition_prior(f, e.s1 - e.s0, o) : 0.0;
         Quad g = design::to_knot(f, (e.s1 - e.s0) / S, &maps[j]);
         const ElementKind k = st[j + 1].kind;
         if (!design::open_element(g, k, e.kind == ElementKind::transition && k == ElementKind::transition)) {
             throw std::invalid_argument("solve_structure: the design rules forbid this sequence");
         }
-        g.c += extra + penalty(k, o);
+        g.c += extra + design::element_penalty(k, o, false);
         f = g;
     }
     FrameDesign d;
@@ -100,7 +78,7 @@ FrameDesign solve_structure(const std::vector<FrameNode>& in, const std::vector<
     if (o.end) {
         design::KnotMap m;
         Quad g = design::to_knot(f, last_u, &m);
-        design::add_tie(g, scaled(*o.end), tie_weight);
+        design::add_tie(g, design::scaled(*o.end), design::tie_weight);
         Vec4 y;
         d.cost = design::minimum(g, &y);
         y(3) = 0.0;
