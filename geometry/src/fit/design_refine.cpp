@@ -32,12 +32,37 @@ bool valid(const std::vector<FrameElement>& st, const DesignDpOptions& o) {
     return true;
 }
 
+// Priors on the solved design that no quadratic can state: a transition's
+// length against the one its curvature change calls for, and a curvature
+// sign change inside one transition counted as the knot at zero it hides.
+double design_prior(const FrameDesign& d, const DesignDpOptions& o) {
+    double c = 0.0;
+    for (const FrameElement& e : d.elements) {
+        if (e.kind != ElementKind::transition) {
+            continue;
+        }
+        const double dk = std::abs(e.k1 - e.k0);
+        if (e.k0 * e.k1 < 0.0 && std::min(std::abs(e.k0), std::abs(e.k1)) > 1e-5) {
+            c += o.parameter_penalty;
+        }
+        if (o.transition_prior > 0.0 && dk > 1e-5 && &e != &d.elements.front() && &e != &d.elements.back()) {
+            const double r = std::log((e.s1 - e.s0) / transition_length_for(dk));
+            c += o.transition_prior * r * r;
+        }
+    }
+    return c;
+}
+
 class Refiner {
 public:
     Refiner(const std::vector<FrameNode>& n, const DesignDpOptions& o) : n_(n), o_(o) {}
 
     double cost(const std::vector<FrameElement>& st) const {
-        return valid(st, o_) ? solve_structure(n_, st, o_).cost : std::numeric_limits<double>::infinity();
+        if (!valid(st, o_)) {
+            return std::numeric_limits<double>::infinity();
+        }
+        const FrameDesign d = solve_structure(n_, st, o_);
+        return d.cost + design_prior(d, o_);
     }
 
     // Tries `st`; keeps it in `best` where it costs less.
@@ -99,6 +124,41 @@ public:
         return improved;
     }
 
+    bool split_elements(std::vector<FrameElement>& st, double& c) const {
+        bool improved = false;
+        constexpr ElementKind kinds[3] = {ElementKind::line, ElementKind::transition, ElementKind::arc};
+        for (std::size_t j = 0; j < st.size(); ++j) {
+            std::vector<FrameElement> best = st;
+            const FrameElement e = st[j];
+            for (const double f : {1.0 / 3.0, 0.5, 2.0 / 3.0}) {
+                const double at = e.s0 + f * (e.s1 - e.s0);
+                for (const ElementKind a : kinds) {
+                    for (const ElementKind b : kinds) {
+                        std::vector<FrameElement> t = st;
+                        t[j] = {a, e.s0, at, 0.0, 0.0};
+                        t.insert(t.begin() + static_cast<std::ptrdiff_t>(j) + 1, FrameElement{b, at, e.s1, 0.0, 0.0});
+                        offer(std::move(t), best, c);
+                    }
+                }
+            }
+            // A transition through zero as two meeting a line between them.
+            if (e.kind == ElementKind::transition) {
+                const double a = e.s0 + (e.s1 - e.s0) / 3.0, b = e.s0 + 2.0 * (e.s1 - e.s0) / 3.0;
+                std::vector<FrameElement> t = st;
+                t[j].s1 = a;
+                t.insert(t.begin() + static_cast<std::ptrdiff_t>(j) + 1,
+                         {FrameElement{ElementKind::line, a, b, 0.0, 0.0}, FrameElement{ElementKind::transition, b, e.s1, 0.0, 0.0}});
+                offer(std::move(t), best, c);
+            }
+            if (best.size() != st.size()) {
+                improved = true;
+                st = std::move(best);
+                ++j;
+            }
+        }
+        return improved;
+    }
+
 private:
     const std::vector<FrameNode>& n_;
     const DesignDpOptions& o_;
@@ -113,8 +173,9 @@ FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const FrameDes
     double c = r.cost(st);
     for (int round = 0; round < 6; ++round) {
         const bool merged = r.merge_elements(st, c);
+        const bool split = r.split_elements(st, c);
         const bool moved = r.move_knots(st, c);
-        if (!merged && !moved) {
+        if (!merged && !split && !moved) {
             break;
         }
     }
