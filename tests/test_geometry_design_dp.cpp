@@ -2,6 +2,7 @@
 // exact recovery of a known design from nodes on it, and the pruned search
 // against every structure on a small knot grid.
 #include "fit/design_dp.hpp"
+#include "fit/design_local.hpp"
 
 #include <gtest/gtest.h>
 
@@ -120,6 +121,7 @@ TEST(DesignDp, PrunedSearchMatchesExhaustiveEnumeration) {
         o.knot_step_m = 10.0;
         o.parameter_penalty = 6.0;
         o.curvature_weight = 1e3;
+        o.refine = false;
         double best = std::numeric_limits<double>::infinity();
         std::vector<FrameElement> st;
         std::function<void(double)> walk = [&](double s) {
@@ -160,10 +162,51 @@ TEST(DesignDp, PrunedSearchMatchesExhaustiveEnumeration) {
         d.beam = DesignDpOptions{}.beam;
         d.spawn = DesignDpOptions{}.spawn;
         d.prune_margin = -1.0;
-        for (std::size_t sp : {2, 3, 4, 8}) for (std::size_t b : {48, 200}) for (double m : {-1.0, 1e9}) {
-            DesignDpOptions e = d; e.spawn = sp; e.beam = b; e.prune_margin = m;
-            std::printf("spawn %zu beam %zu margin %g: %.3f (best %.3f)\n", sp, b, m, design_dp(n, e).cost, best);
-        }
         EXPECT_NEAR(design_dp(n, d).cost, best, 1e-6 * best) << "seed " << seed;
+    }
+}
+
+// A window's cost from the knot costs before and after it equals the whole
+// structure solved again, for knot moves, merges and splits anywhere.
+TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
+    const FrameDesign truth = known();
+    const std::vector<FrameNode> n = nodes_on(truth, 7.0, 0.3, 11);
+    for (const bool tied : {false, true}) {
+        DesignDpOptions o;
+        o.s0 = 0.0;
+        o.s1 = 700.0;
+        o.curvature_weight = 100.0;
+        if (tied) {
+            o.start = FrameState{0.3, 0.01, 0.0};
+            o.end = FrameState{z_of(truth, 700.0), 0.3, 0.0};
+        }
+        const std::vector<FrameElement> st = truth.elements;
+        StructureCosts costs(n, o);
+        costs.reset(st);
+        EXPECT_NEAR(costs.cost(), solve_structure(n, st, o).cost, 1e-6 * costs.cost());
+        struct Case {
+            std::size_t j, k;
+            std::vector<FrameElement> w;
+        };
+        const std::vector<Case> cases = {
+            {1, 3, {{ElementKind::transition, 200, 275, 0, 0}, {ElementKind::arc, 275, 410, 0, 0}}},
+            {0, 2, {{ElementKind::line, 0, 230, 0, 0}, {ElementKind::transition, 230, 260, 0, 0}}},
+            {2, 3, {{ElementKind::arc, 260, 300, 0, 0}, {ElementKind::transition, 300, 330, 0, 0}, {ElementKind::arc, 330, 410, 0, 0}}},
+            {3, 5, {{ElementKind::transition, 410, 500, 0, 0}, {ElementKind::line, 500, 700, 0, 0}}},
+            {4, 5, {{ElementKind::line, 470, 600, 0, 0}, {ElementKind::transition, 600, 700, 0, 0}}},
+        };
+        for (const Case& c : cases) {
+            std::vector<FrameElement> whole = st;
+            whole.erase(whole.begin() + static_cast<long>(c.j), whole.begin() + static_cast<long>(c.k));
+            whole.insert(whole.begin() + static_cast<long>(c.j), c.w.begin(), c.w.end());
+            const FrameDesign d = solve_structure(n, whole, o);
+            double prior = 0.0;
+            for (std::size_t i = 0; i < d.elements.size(); ++i) {
+                prior += element_prior(d.elements[i], i == 0 || i + 1 == d.elements.size(), o);
+            }
+            EXPECT_NEAR(costs.replaced(c.j, c.k, c.w), d.cost + prior, 1e-6 * d.cost) << c.j << " " << c.k << " tied " << tied;
+        }
+        // An arc straight after a line is no railway design.
+        EXPECT_TRUE(std::isinf(costs.replaced(1, 2, {{ElementKind::arc, 200, 260, 0, 0}})));
     }
 }

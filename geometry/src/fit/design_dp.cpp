@@ -98,7 +98,7 @@ void Search::seed() {
         h.kind = k;
         h.record = static_cast<int>(records_.size());
         records_.push_back({-1, o_.s0, k});
-        h.penalties = design::element_penalty(k, o_, true);
+        h.penalties = design::element_penalty(k, o_, !o_.start);
         h.f.c += h.penalties;
         live_.push_back(std::move(h));
     }
@@ -138,7 +138,6 @@ void Search::spawn(double s) {
         ElementKind next[3];
         const int m = successors(h.kind, next);
         const Quad knot = design::to_knot(h.f, (s - h.start) / S);
-        const double prior = h.kind == ElementKind::transition ? design::transition_prior(h.f, s - h.start, o_) : 0.0;
         for (int j = 0; j < m; ++j) {
             Hypothesis g;
             g.f = knot;
@@ -146,7 +145,7 @@ void Search::spawn(double s) {
             if (!design::open_element(g.f, kind, h.kind == ElementKind::transition && kind == ElementKind::transition)) {
                 continue;
             }
-            g.penalties = design::element_penalty(kind, o_, false) + prior;
+            g.penalties = design::element_penalty(kind, o_, false);
             g.f.c += g.penalties;
             g.start = s;
             g.kind = kind;
@@ -227,6 +226,9 @@ std::vector<FrameElement> Search::best_path(double s1) {
     int at = -1;
     for (const Hypothesis& h : live_) {
         double v = h.value;
+        if (!o_.end && h.kind == ElementKind::transition) {
+            v += design::element_penalty(h.kind, o_, true) - design::element_penalty(h.kind, o_, false);
+        }
         if (o_.end) {
             Quad g = design::to_knot(h.f, (s1 - h.start) / S);
             design::add_tie(g, design::scaled(*o_.end), design::tie_weight);
@@ -309,7 +311,8 @@ FrameDesign design_dp(const std::vector<FrameNode>& nodes, const DesignDpOptions
     std::vector<FrameNode> sorted = nodes;
     std::stable_sort(sorted.begin(), sorted.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
     Search search(sorted, o);
-    return refine_structure(sorted, solve_structure(sorted, search.run(), o), o);
+    const FrameDesign found = solve_structure(sorted, search.run(), o);
+    return o.refine ? refine_structure(sorted, found, o) : found;
 }
 
 } // namespace railodd::geometry::fit

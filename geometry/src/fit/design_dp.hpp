@@ -52,6 +52,7 @@ struct DesignDpOptions {
     std::size_t spawn = 3;  // parent elements each new element may follow at a knot, and histories kept per element
     double prune_margin = -1.0; // hypotheses this far above the best are dropped; < 0: 4 penalties + 20
     std::optional<FrameState> start, end; // tied ends
+    bool refine = true; // the local search after the beam (refine_structure)
 };
 
 struct FrameDesign {

@@ -207,23 +207,28 @@ bool open_element(Quad& f, ElementKind kind, bool after_transition) {
 
 Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
 
-double element_penalty(ElementKind k, const DesignDpOptions& o, bool first) {
-    const double params = k == ElementKind::arc ? 2.0 : (k == ElementKind::transition && first && !o.start) ? 2.0 : 1.0;
+double element_penalty(ElementKind k, const DesignDpOptions& o, bool at_free_end) {
+    const double params = k == ElementKind::arc ? 2.0 : (k == ElementKind::transition && at_free_end) ? 2.0 : 1.0;
     return params * o.parameter_penalty;
 }
 
-double transition_prior(const Quad& f, double length, const DesignDpOptions& o) {
-    if (o.transition_prior <= 0.0) {
-        return 0.0;
+void add_quad(Quad& a, const Quad& b) {
+    a.P += b.P;
+    a.q += b.q;
+    a.c += b.c;
+    const unsigned both = a.free & b.free;
+    for (int i = 0; i < 4; ++i) {
+        if ((a.free & (1u << i)) && !(both & (1u << i))) {
+            restrict_to_zero(a, i);
+        }
     }
-    Vec4 x;
-    minimum(f, &x);
-    const double dk = std::abs(x(3) * (length / S)) / (S * S);
-    if (dk < 1e-5) {
-        return 0.0;
+    a.free = both;
+}
+
+void fix_zero(Quad& f, int i) {
+    if (f.free & (1u << i)) {
+        restrict_to_zero(f, i);
     }
-    const double r = std::log(length / transition_length_for(dk));
-    return o.transition_prior * r * r;
 }
 
 unsigned first_free(ElementKind kind) {

@@ -79,14 +79,16 @@ constexpr double tie_weight = 1e9;
 
 Vec4 scaled(const FrameState& s);
 
-// The L0 penalty of opening an element: one parameter for its length, one
-// more for an arc's curvature, and one more for a first transition's free
-// start curvature (a chain that does not start tied starts straight or in a
-// curve, seldom inside a transition).
-double element_penalty(ElementKind kind, const DesignDpOptions& o, bool first);
+// The L0 penalty of an element: one parameter for its length, one more for
+// an arc's curvature, and one more for a transition at a free chain end
+// (its curvature there is free: a chain that is not tied starts and ends
+// straight or in a curve, seldom inside a transition).
+double element_penalty(ElementKind kind, const DesignDpOptions& o, bool at_free_end);
 
-// The design prior on a transition of this cost and length ending at its
-// knot: its length against the one its curvature change calls for.
-double transition_prior(const Quad& f, double length, const DesignDpOptions& o);
+// Adds b to a; a coordinate that is no variable in either is none in the sum.
+void add_quad(Quad& a, const Quad& b);
+
+// Coordinate i fixed at zero.
+void fix_zero(Quad& f, int i);
 
 } // namespace railodd::geometry::fit::design

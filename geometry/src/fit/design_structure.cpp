@@ -4,6 +4,7 @@
 // smoother recovers states from an information filter).
 #include "design_dp.hpp"
 
+#include "design_local.hpp"
 #include "design_quadratic.hpp"
 
 #include <algorithm>
@@ -37,23 +38,28 @@ double frame_z(const FrameDesign& d, double t) {
     return z;
 }
 
-FrameDesign solve_structure(const std::vector<FrameNode>& in, const std::vector<FrameElement>& st,
-                            const DesignDpOptions& o) {
+double forward_pass(const std::vector<FrameNode>& n, const std::vector<FrameElement>& st, const DesignDpOptions& o,
+                    std::vector<Quad>* knots, std::vector<design::KnotMap>* maps, Vec4* last_start) {
     if (st.empty()) {
         throw std::invalid_argument("solve_structure: no elements");
     }
-    std::vector<FrameNode> n = in;
-    std::stable_sort(n.begin(), n.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
-    std::vector<design::KnotMap> maps(st.size());
+    const std::size_t m = st.size();
+    if (knots) {
+        knots->assign(m + 1, Quad{});
+    }
+    if (maps) {
+        maps->assign(m, design::KnotMap{});
+    }
     Quad f = design::empty_quad(design::first_free(st.front().kind));
     if (o.start) {
         design::add_tie(f, design::scaled(*o.start), design::tie_weight);
     }
-    f.c += design::element_penalty(st.front().kind, o, true);
+    const auto free_end = [&](std::size_t j) { return (j == 0 && !o.start) || (j + 1 == m && !o.end); };
+    f.c += design::element_penalty(st.front().kind, o, free_end(0));
     std::size_t next = 0;
     for (std::size_t j = 0;; ++j) {
         const FrameElement& e = st[j];
-        const bool last = j + 1 == st.size();
+        const bool last = j + 1 == m;
         for (; next < n.size() && (last || n[next].t <= e.s1); ++next) {
             design::add_row(f, design::node_row((n[next].t - e.s0) / S), n[next].w, n[next].z);
         }
@@ -63,29 +69,46 @@ FrameDesign solve_structure(const std::vector<FrameNode>& in, const std::vector<
         if (last) {
             break;
         }
-        const double extra = e.kind == ElementKind::transition ? design::transition_prior(f, e.s1 - e.s0, o) : 0.0;
-        Quad g = design::to_knot(f, (e.s1 - e.s0) / S, &maps[j]);
+        Quad g = design::to_knot(f, (e.s1 - e.s0) / S, maps ? &(*maps)[j] : nullptr);
+        if (knots) {
+            (*knots)[j + 1] = g;
+        }
         const ElementKind k = st[j + 1].kind;
         if (!design::open_element(g, k, e.kind == ElementKind::transition && k == ElementKind::transition)) {
             throw std::invalid_argument("solve_structure: the design rules forbid this sequence");
         }
-        g.c += extra + design::element_penalty(k, o, false);
+        g.c += design::element_penalty(k, o, free_end(j + 1));
         f = g;
     }
-    FrameDesign d;
-    std::vector<Vec4> x(st.size());
-    const double last_u = (st.back().s1 - st.back().s0) / S;
+    Vec4 x = Vec4::Zero();
+    double cost = 0.0;
     if (o.end) {
-        design::KnotMap m;
-        Quad g = design::to_knot(f, last_u, &m);
+        design::KnotMap map;
+        Quad g = design::to_knot(f, (st.back().s1 - st.back().s0) / S, &map);
         design::add_tie(g, design::scaled(*o.end), design::tie_weight);
         Vec4 y;
-        d.cost = design::minimum(g, &y);
+        cost = design::minimum(g, &y);
         y(3) = 0.0;
-        x.back() = design::start_from_knot(m, y);
+        x = design::start_from_knot(map, y);
     } else {
-        d.cost = design::minimum(f, &x.back());
+        cost = design::minimum(f, &x);
     }
+    if (last_start) {
+        *last_start = x;
+    }
+    return cost;
+}
+
+FrameDesign solve_structure(const std::vector<FrameNode>& in, const std::vector<FrameElement>& st,
+                            const DesignDpOptions& o) {
+    std::vector<FrameNode> n = in;
+    if (!std::is_sorted(n.begin(), n.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; })) {
+        std::stable_sort(n.begin(), n.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
+    }
+    std::vector<design::KnotMap> maps;
+    std::vector<Vec4> x(st.size());
+    FrameDesign d;
+    d.cost = forward_pass(n, st, o, nullptr, &maps, &x.back());
     for (std::size_t j = st.size() - 1; j-- > 0;) {
         Vec4 y = x[j + 1];
         y(3) = 0.0;

@@ -1,0 +1,57 @@
+#pragma once
+// The cost of a structure with a few neighbouring elements replaced, in time
+// proportional to the nodes they cover: the cost of everything before the
+// window as a quadratic in the state at its first knot (the forward pass of
+// solve_structure) and of everything after it as a quadratic in the state
+// at its last knot (the same pass run backwards along the chain), as a
+// Kalman smoother splits a track in two. What the local search
+// (design_refine.cpp) tries thousands of times per chain.
+#include "design_dp.hpp"
+#include "design_quadratic.hpp"
+
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+// The forward pass over a structure: its cost; optionally the knot costs
+// before each element opens (knots[j] for j in 1..m-1), the knot maps for
+// backtracking and the last element's start state. Nodes sorted by t.
+double forward_pass(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& st, const DesignDpOptions& o,
+                    std::vector<design::Quad>* knots, std::vector<design::KnotMap>* maps, design::Vec4* last_start);
+
+// Priors on a solved element that no quadratic can state: a transition's
+// length against the one its curvature change calls for (not at a chain
+// end, where it is cut), and a curvature sign change inside one transition
+// counted as the knot at zero it hides.
+double element_prior(const FrameElement& e, bool chain_end, const DesignDpOptions& o);
+
+class StructureCosts {
+public:
+    // nodes sorted by t; both must outlive this.
+    StructureCosts(const std::vector<FrameNode>& nodes, const DesignDpOptions& o);
+
+    // Takes `st` as the current structure: its forward and backward knot costs.
+    void reset(const std::vector<FrameElement>& st);
+    double cost() const { return cost_ + prior_total_; }
+
+    // The cost with elements [j, k) replaced by w, which spans the same
+    // chainage; infinite where the design rules forbid the sequence.
+    double replaced(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const;
+
+private:
+    bool allowed(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const;
+    double window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
+                        const std::vector<design::KnotMap>& maps, design::Vec4 x) const;
+
+    const std::vector<FrameNode>& n_;
+    const DesignDpOptions& o_;
+    std::vector<FrameNode> mirrored_;
+    DesignDpOptions mirror_options_;
+    std::vector<FrameElement> st_;
+    std::vector<design::Quad> forward_, backward_;
+    std::vector<double> prior_; // per element, from the last full solve
+    double prior_total_ = 0.0;
+    double cost_ = 0.0;
+};
+
+} // namespace railodd::geometry::fit
