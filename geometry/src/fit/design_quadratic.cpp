@@ -1,5 +1,6 @@
 #include "design_quadratic.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace railodd::geometry::fit::design {
@@ -18,6 +19,20 @@ int variables(unsigned free, int* idx) {
         }
     }
     return d;
+}
+
+// The mask of each set of free coordinates, as a vector of ones and zeros.
+const Vec4& mask(unsigned free) {
+    static const auto table = [] {
+        std::array<Vec4, 16> t;
+        for (unsigned m = 0; m < 16; ++m) {
+            for (int i = 0; i < 4; ++i) {
+                t[m](i) = (m & (1u << i)) ? 1.0 : 0.0;
+            }
+        }
+        return t;
+    }();
+    return table[free & 15u];
 }
 
 // Coordinate i is no variable any more: fixed at zero.
@@ -51,12 +66,7 @@ Quad empty_quad(unsigned free) {
 }
 
 void add_row(Quad& f, const Vec4& h, double w, double target) {
-    Vec4 m = h;
-    for (int i = 0; i < 4; ++i) {
-        if (!(f.free & (1u << i))) {
-            m(i) = 0.0;
-        }
-    }
+    const Vec4 m = h.cwiseProduct(mask(f.free));
     f.P.noalias() += (w * m) * m.transpose();
     f.q += (w * target) * m;
     f.c += w * target * target;
@@ -89,24 +99,53 @@ void add_tie(Quad& f, const Vec4& target, double w) {
 }
 
 double minimum(const Quad& f, Vec4* arg) {
+    // Cholesky of the free block, at most 4 x 4, by hand: the search calls
+    // this once per live hypothesis and node.
     int idx[4];
     const int d = variables(f.free, idx);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> A(d, d);
-    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> b(d);
+    double L[4][4] = {}, b[4], x[4];
     for (int i = 0; i < d; ++i) {
-        b(i) = f.q(idx[i]);
-        for (int j = 0; j < d; ++j) {
-            A(i, j) = f.P(idx[i], idx[j]);
+        b[i] = f.q(idx[i]);
+        for (int j = 0; j <= i; ++j) {
+            double v = f.P(idx[i], idx[j]);
+            for (int k = 0; k < j; ++k) {
+                v -= L[i][k] * L[j][k];
+            }
+            if (i == j) {
+                if (!(v > 0.0)) {
+                    v = 1e-300; // semidefinite: that direction costs nothing
+                }
+                L[i][i] = std::sqrt(v);
+            } else {
+                L[i][j] = v / L[j][j];
+            }
         }
     }
-    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> x = A.ldlt().solve(b);
+    for (int i = 0; i < d; ++i) {
+        double v = b[i];
+        for (int k = 0; k < i; ++k) {
+            v -= L[i][k] * x[k];
+        }
+        x[i] = v / L[i][i];
+    }
+    for (int i = d; i-- > 0;) {
+        double v = x[i];
+        for (int k = i + 1; k < d; ++k) {
+            v -= L[k][i] * x[k];
+        }
+        x[i] = v / L[i][i];
+    }
+    double value = f.c;
     if (arg) {
         arg->setZero();
-        for (int i = 0; i < d; ++i) {
-            (*arg)(idx[i]) = x(i);
+    }
+    for (int i = 0; i < d; ++i) {
+        value -= b[i] * x[i];
+        if (arg) {
+            (*arg)(idx[i]) = x[i];
         }
     }
-    return f.c - b.dot(x);
+    return value;
 }
 
 Quad to_knot(const Quad& f, double u, KnotMap* map) {
@@ -134,11 +173,12 @@ Quad to_knot(const Quad& f, double u, KnotMap* map) {
         return g;
     }
     // d variables map one to one onto the first d knot coordinates (a line
-    // ends at zero curvature, so its knot has two).
+    // ends at zero curvature, so its knot has two) by an upper triangular
+    // map, padded to 4 x 4 with the identity.
     int cols[4];
     const int d = variables(f.free, cols);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> M(d, d), Pv(d, d);
-    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> qv(d);
+    Mat4 M = Mat4::Identity(), Pv = Mat4::Zero();
+    Vec4 qv = Vec4::Zero();
     for (int i = 0; i < d; ++i) {
         qv(i) = f.q(cols[i]);
         for (int j = 0; j < d; ++j) {
@@ -146,15 +186,9 @@ Quad to_knot(const Quad& f, double u, KnotMap* map) {
             Pv(i, j) = f.P(cols[i], cols[j]);
         }
     }
-    const auto Mi = M.inverse();
-    const auto Py = (Mi.transpose() * Pv * Mi).eval();
-    const auto qy = (Mi.transpose() * qv).eval();
-    for (int i = 0; i < d; ++i) {
-        g.q(i) = qy(i);
-        for (int j = 0; j < d; ++j) {
-            g.P(i, j) = Py(i, j);
-        }
-    }
+    const Mat4 Mi = M.triangularView<Eigen::Upper>().solve(Mat4::Identity());
+    g.P = Mi.transpose() * Pv * Mi;
+    g.q = Mi.transpose() * qv;
     g.c = f.c;
     g.free = d == 2 ? 3u : 7u;
     return g;
@@ -169,15 +203,15 @@ Vec4 start_from_knot(const KnotMap& map, const Vec4& y) {
     int cols[4];
     const int d = variables(map.free, cols);
     const Mat4 F = flow(map.length);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> M(d, d);
-    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> yv(d);
+    Mat4 M = Mat4::Identity();
+    Vec4 yv = Vec4::Zero();
     for (int i = 0; i < d; ++i) {
         yv(i) = y(i);
         for (int j = 0; j < d; ++j) {
             M(i, j) = F(i, cols[j]);
         }
     }
-    const auto xi = M.partialPivLu().solve(yv).eval();
+    const Vec4 xi = M.triangularView<Eigen::Upper>().solve(yv);
     Vec4 x = Vec4::Zero();
     for (int i = 0; i < d; ++i) {
         x(cols[i]) = xi(i);
