@@ -82,6 +82,8 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
     o.parameter_penalty = (std::getenv("PEN") ? std::atof(std::getenv("PEN")) : 2.0) * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
+    if (std::getenv("BEAM")) { o.beam = std::atoi(std::getenv("BEAM")); o.spawn = std::atoi(std::getenv("SPAWN")); }
+    if (std::getenv("STEP")) { o.knot_step_m = std::atof(std::getenv("STEP")); }
     o.curvature_weight = std::getenv("CW") ? std::atof(std::getenv("CW")) : 0.0;
     o.transition_prior = std::getenv("TP") ? std::atof(std::getenv("TP")) : 0.0;
     const FrameDesign d = design_dp(nodes, o);

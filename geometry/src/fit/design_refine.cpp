@@ -85,6 +85,11 @@ private:
             offer(j, j + 2, {FrameElement{k, st[j].s0, st[j + 1].s1, 0.0, 0.0}}, best);
         }
         if (j + 2 < st.size()) {
+            // Three into one: an arc split by a near-constant transition, a
+            // short curve between two transitions.
+            for (const ElementKind k : kinds) {
+                offer(j, j + 3, {FrameElement{k, st[j].s0, st[j + 2].s1, 0.0, 0.0}}, best);
+            }
             const double mid = 0.5 * (st[j + 1].s0 + st[j + 1].s1);
             std::vector<FrameElement> w{st[j], st[j + 2]};
             w[0].s1 = mid;
@@ -93,10 +98,15 @@ private:
         }
     }
 
-    // Element j split in two of any kinds, or a transition into two with a
-    // line between (a reverse curve's straight).
+    // Element j of another kind, split in two of any kinds, or a transition
+    // into two with a line between (a reverse curve's straight).
     void try_splits(const std::vector<FrameElement>& st, std::size_t j, Move& best) const {
         const FrameElement& e = st[j];
+        for (const ElementKind k : kinds) {
+            if (k != e.kind) {
+                offer(j, j + 1, {FrameElement{k, e.s0, e.s1, 0.0, 0.0}}, best);
+            }
+        }
         for (const double f : {0.25, 0.5, 0.75}) {
             const double at = e.s0 + f * (e.s1 - e.s0);
             for (const ElementKind a : kinds) {
