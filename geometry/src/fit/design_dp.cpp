@@ -12,8 +12,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <cstdio>
-#include <cstdlib>
 
 namespace railodd::geometry::fit {
 
@@ -37,6 +35,7 @@ struct Hypothesis {
     double penalties = 0.0; // included in f.c
     double value = 0.0;     // minimum of f: data, priors and penalties so far
     int seen = 0;           // nodes taken since the element opened
+    double covered = 0.0;   // the curvature prior is in f up to this chainage
 };
 
 // A hypothesis younger than this many nodes is kept whatever its cost: its
@@ -76,7 +75,8 @@ public:
 
 private:
     void seed();
-    void advance(double from, double to, std::size_t& next);
+    void cover(Hypothesis& h, double to) const;
+    void advance(double to, std::size_t& next);
     void spawn(double s);
     void keep_best();
     std::vector<FrameElement> best_path(double s1);
@@ -95,6 +95,7 @@ void Search::seed() {
             design::add_tie(h.f, design::scaled(*o_.start), design::tie_weight);
         }
         h.start = o_.s0;
+        h.covered = o_.s0;
         h.kind = k;
         h.record = static_cast<int>(records_.size());
         records_.push_back({-1, o_.s0, k});
@@ -104,9 +105,15 @@ void Search::seed() {
     }
 }
 
-// Every live hypothesis takes the nodes in (from, to] and the curvature
-// prior over the step.
-void Search::advance(double from, double to, std::size_t& next) {
+// Every live hypothesis takes the nodes up to `to`.
+void Search::cover(Hypothesis& h, double to) const {
+    if (o_.curvature_weight > 0.0 && to > h.covered) {
+        design::add_curvature(h.f, (h.covered - h.start) / S, (to - h.start) / S, o_.curvature_weight);
+    }
+    h.covered = std::max(h.covered, to);
+}
+
+void Search::advance(double to, std::size_t& next) {
     const std::size_t first = next;
     while (next < n_.size() && n_[next].t <= to) {
         ++next;
@@ -116,10 +123,10 @@ void Search::advance(double from, double to, std::size_t& next) {
             design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
         }
         h.seen += static_cast<int>(next - first);
-        if (o_.curvature_weight > 0.0) {
-            design::add_curvature(h.f, (from - h.start) / S, (to - h.start) / S, o_.curvature_weight);
-        }
-        if (next > first || o_.curvature_weight > 0.0) {
+        if (next > first) {
+            // The prior is brought up to date only where nodes came: the
+            // knots open there, and the value is wanted there.
+            cover(h, to);
             h.value = design::minimum(h.f);
         }
     }
@@ -148,6 +155,7 @@ void Search::spawn(double s) {
             g.penalties = design::element_penalty(kind, o_, false);
             g.f.c += g.penalties;
             g.start = s;
+            g.covered = s;
             g.kind = kind;
             g.value = design::minimum(g.f);
             children[static_cast<int>(kind)].push_back(std::move(g));
@@ -240,7 +248,6 @@ std::vector<FrameElement> Search::best_path(double s1) {
         }
     }
     std::vector<FrameElement> path;
-    if (std::getenv("DPDEBUG")) std::fprintf(stderr, "search best %.3f live %zu records %zu\n", best, live_.size(), records_.size());
     double end = s1;
     for (int r = at; r >= 0; r = records_[static_cast<std::size_t>(r)].parent) {
         const Record& rec = records_[static_cast<std::size_t>(r)];
@@ -265,32 +272,21 @@ std::vector<FrameElement> Search::run() {
             design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
         }
     }
-    double from = o_.s0;
     for (std::size_t k = 1; k <= steps; ++k) {
         const double to = k == steps ? o_.s1 : o_.s0 + static_cast<double>(k) * o_.knot_step_m;
         const std::size_t before = next;
-        advance(from, to, next);
+        advance(to, next);
         if (k < steps && next > before) {
             spawn(to);
             keep_best();
-            if (std::getenv("DPAT") && std::abs(to - std::atof(std::getenv("DPAT"))) < 40) {
-                std::fprintf(stderr, "at %.0f:", to);
-                for (auto& h : live_) {
-                    const Record* r = &records_[h.record];
-                    std::fprintf(stderr, " [%d@%.0f<-", (int)h.kind, h.start);
-                    if (r->parent >= 0) { const Record& p = records_[r->parent]; std::fprintf(stderr, "%d@%.0f", (int)p.kind, p.s); }
-                    std::fprintf(stderr, " %.1f s%d]", h.value, h.seen);
-                }
-                std::fprintf(stderr, "\n");
-            }
         }
-        from = to;
     }
     // Nodes past the range count at its end.
     for (Hypothesis& h : live_) {
         for (std::size_t i = next; i < n_.size(); ++i) {
             design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
         }
+        cover(h, o_.s1);
         h.value = design::minimum(h.f);
     }
     return best_path(o_.s1);

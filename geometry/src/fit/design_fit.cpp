@@ -34,8 +34,13 @@ double median(std::vector<double> v) {
 }
 
 // The noise scale of the residuals: their MAD, corrected for the
-// parameters the fit spent on them.
-double residual_sigma(const Pass& pass, const std::vector<double>& weight) {
+// parameters the fit spent on them, pooled with a prior of `prior_nodes`
+// pseudo-nodes at `prior_m` (a scaled inverse chi-square prior). A chain of
+// a dozen nodes a few parameters cannot tell its scatter alone: from its
+// own residuals it drifts up, the penalty in units of it grows, fewer
+// elements fit, and the residuals grow again.
+double residual_sigma(const Pass& pass, const std::vector<double>& weight, double prior_m) {
+    constexpr double prior_nodes = 10.0;
     std::vector<double> kept;
     for (std::size_t i = 0; i < weight.size(); ++i) {
         if (weight[i] > 0.0) {
@@ -43,8 +48,10 @@ double residual_sigma(const Pass& pass, const std::vector<double>& weight) {
         }
     }
     const double n = static_cast<double>(kept.size());
-    const double dof = std::max(1.0, n - static_cast<double>(pass.parameters));
-    return std::clamp(1.4826 * median(kept) * std::sqrt(n / dof), 0.02, 10.0);
+    const double dof = std::max(0.0, n - static_cast<double>(pass.parameters));
+    const double mad = 1.4826 * median(kept);
+    const double var = (n * mad * mad + prior_nodes * prior_m * prior_m) / (dof + prior_nodes);
+    return std::clamp(std::sqrt(var), 0.02, 10.0);
 }
 
 // Tukey's biweight of each node's distance; a far node whose neighbour is
@@ -81,11 +88,11 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
         o.end = frame_state(ref, *end, &o.s1);
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
-    o.parameter_penalty = (std::getenv("PEN") ? std::atof(std::getenv("PEN")) : 2.0) * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
+    o.parameter_penalty = (std::getenv("PEN") ? std::atof(std::getenv("PEN")) : 1.5) * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
     if (std::getenv("BEAM")) { o.beam = std::atoi(std::getenv("BEAM")); o.spawn = std::atoi(std::getenv("SPAWN")); }
     if (std::getenv("STEP")) { o.knot_step_m = std::atof(std::getenv("STEP")); }
-    o.curvature_weight = std::getenv("CW") ? std::atof(std::getenv("CW")) : 0.0;
-    o.transition_prior = std::getenv("TP") ? std::atof(std::getenv("TP")) : 0.0;
+    o.curvature_weight = std::getenv("CW") ? std::atof(std::getenv("CW")) : 300.0;
+    o.transition_prior = std::getenv("TP") ? std::atof(std::getenv("TP")) : 3.0;
     const FrameDesign d = design_dp(nodes, o);
     Pass pass;
     pass.design = d;
@@ -181,7 +188,7 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
     double sigma = fixed ? options.noise_sigma_m : guess;
     Pass pass = run_pass(smooth_reference(p, smoothing_m, reference_step_m), p, weight, sigma, start, end);
     for (int round = 0; round < 4; ++round) {
-        const double next = fixed ? sigma : residual_sigma(pass, weight);
+        const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
         sigma = next;
         weight = robust_weights(pass.distance, sigma);
