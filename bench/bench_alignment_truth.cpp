@@ -1,8 +1,10 @@
 // The alignment fit against ground truth (data/alignment_truth): seeded
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
-// [--outliers F] [--worst N] [--bound] [--first SEED] (defaults: 300
-// routes from seed 1000, sigma 0.1 0.3 1.0, 1 % outliers; --worst lists the
+// [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing
+// osm|dense|sparse] [--method windowed|design] (defaults: 300 routes from
+// seed 1000, sigma 0.1 0.3 1.0, 1 % outliers, OSM-like node spacing
+// (alignment_truth.hpp), the windowed fit; --worst lists the
 // N worst routes and arcs; --bound
 // adds each arc's Cramer-Rao bound, design_crlb.hpp). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
@@ -58,6 +60,7 @@ struct Options {
     bool bound = false;
     int first = 1000; // seed of the first route
     truth::Spacing spacing = truth::Spacing::osm;
+    geometry::FitMethod method = geometry::FitMethod::windowed;
 };
 
 // The arcs' Cramer-Rao bounds (relative sd of the curvature) against the
@@ -93,7 +96,9 @@ void run_sigma(const Options& opt, double sigma) {
         const int seed = opt.first + i;
         const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), o);
         const auto t0 = std::chrono::steady_clock::now();
-        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, {});
+        geometry::FitOptions fo;
+        fo.method = opt.method;
+        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, fo);
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const truth::TruthScore s = truth::score(r, fit.alignment);
         noise.push_back(fit.quality.noise_sigma_m / sigma);
@@ -167,6 +172,8 @@ int main(int argc, char** argv) {
         } else if (a == "--spacing" && i + 1 < argc) {
             const std::string v = argv[++i];
             o.spacing = v == "dense" ? truth::Spacing::dense : v == "sparse" ? truth::Spacing::sparse : truth::Spacing::osm;
+        } else if (a == "--method" && i + 1 < argc) {
+            o.method = std::string(argv[++i]) == "design" ? geometry::FitMethod::design_search : geometry::FitMethod::windowed;
         } else if (a == "--bound") {
             o.bound = true;
         } else {

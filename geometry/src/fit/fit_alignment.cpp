@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -414,7 +413,7 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
     }
-    if (std::getenv("RAILODD_DP")) {
+    if (options.method == FitMethod::design_search) {
         return fit::fit_design(mapped, start, end, options);
     }
     // Outlier nodes are left out of the fit; its quality is still measured

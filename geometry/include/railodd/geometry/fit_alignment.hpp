@@ -16,6 +16,14 @@ struct Point {
     double y = 0.0;
 };
 
+// How a chain's design is read from its nodes. `windowed`: the trend
+// filter, candidate structures and LM window by window (docs/geometry.md).
+// `design_search`: one L0-penalised search per chain (docs/geometry.md,
+// "Design search"), which is to replace it once it wins the truth bench
+// and the real extracts on every row (issue 37); until then it is reached
+// from the benches only.
+enum class FitMethod { windowed, design_search };
+
 struct FitOptions {
     // Scatter of the mapped nodes about the true centreline; 0: estimated per
     // chain from the nodes themselves (FitQuality::noise_sigma_m).
@@ -27,6 +35,7 @@ struct FitOptions {
     double ridge_sigma = 2e-3;     // 1/m: weak pull of the fine spline towards zero curvature
     unsigned threads = 0;          // chains fitted at once by fit_track_graph; 0: one per hardware thread
     bool parallel_guides = true;   // fit_track_graph offers a chain the design of the track it runs beside
+    FitMethod method = FitMethod::windowed;
 };
 
 struct FitQuality {

@@ -1,0 +1,61 @@
+// The fit on a real extract, by each method: report.json's geometry summary
+// (design statistics, node noise, links) and the fit's time, for the
+// windowed fit and the design search (FitMethod, fit_alignment.hpp) on the
+// same track graph. Run: build/bench/bench_fit_extract EXTRACT.osm.pbf
+// [--method windowed|design|both] [--threads N] (default both, 2 threads).
+// Prints one JSON object per method.
+#include "railodd/geometry/dump.hpp"
+#include "railodd/geometry/track_fit.hpp"
+#include "railodd/geometry/track_graph.hpp"
+#include "railodd/ingest/osm_reader.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace railodd;
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: bench_fit_extract EXTRACT [--method windowed|design|both] [--threads N]\n");
+        return 2;
+    }
+    std::string method = "both";
+    unsigned threads = 2;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        const std::string a = argv[i];
+        if (a == "--method") {
+            method = argv[i + 1];
+        } else if (a == "--threads") {
+            threads = static_cast<unsigned>(std::stoul(argv[i + 1]));
+        }
+    }
+    ingest::IngestOptions io;
+    io.road_corridor_m = 0.0;
+    io.land_use = false;
+    const ingest::IngestResult r = ingest::read_osm(argv[1], io);
+    const geometry::TrackGraph graph = geometry::build_track_graph(r.tracks, r.features);
+    std::vector<std::pair<std::string, geometry::FitMethod>> runs;
+    if (method != "design") {
+        runs.push_back({"windowed", geometry::FitMethod::windowed});
+    }
+    if (method != "windowed") {
+        runs.push_back({"design", geometry::FitMethod::design_search});
+    }
+    for (const auto& [name, m] : runs) {
+        geometry::FitOptions fo;
+        fo.method = m;
+        fo.threads = threads;
+        const auto t0 = std::chrono::steady_clock::now();
+        const geometry::FittedNetwork net = geometry::fit_track_graph(graph, fo);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        nlohmann::ordered_json out;
+        out["method"] = name;
+        out["fit_seconds"] = seconds;
+        out["summary"] = geometry::report_section(graph, net)["summary"];
+        std::cout << out.dump() << "\n";
+    }
+    return 0;
+}
