@@ -79,6 +79,23 @@ std::vector<double> robust_weights(const std::vector<double>& d, double sigma) {
     return w;
 }
 
+// Nodes far off the smoothing spline where their neighbours are not (an
+// isolated spike) are left out of the first pass: fitted there, a spike
+// near a free chain end bends the first element into a hook the later
+// passes, which take that design as their frame, cannot undo. 1.5 m at
+// least: the spline cuts a tight curve's nodes by up to about that much.
+void screen_spikes(const ReferenceLine& smooth, const std::vector<Point2>& p, std::vector<double>& weight) {
+    constexpr double spike_m = 1.5;
+    std::vector<double> off;
+    for (const FrameNode& n : develop(smooth, p)) {
+        off.push_back(std::abs(n.z - smooth.developed(n.t)));
+    }
+    const std::vector<double> w = robust_weights(off, spike_m / 4.685);
+    for (std::size_t i = 0; i < weight.size(); ++i) {
+        weight[i] = w[i] == 0.0 ? 0.0 : weight[i];
+    }
+}
+
 Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
               const std::optional<Pose>& start, const std::optional<Pose>& end) {
     std::vector<FrameNode> nodes = develop(ref, p);
@@ -86,8 +103,12 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
         nodes[i].w = weight[i] / (sigma * sigma);
     }
     DesignDpOptions o;
-    o.s0 = nodes.front().t;
-    o.s1 = nodes.back().t;
+    // The span of the nodes' chainages, not the first's and the last's: a
+    // design that hooks at a free end can put the last node's foot inside.
+    const auto [lo, hi] = std::minmax_element(nodes.begin(), nodes.end(),
+                                              [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
+    o.s0 = lo->t;
+    o.s1 = hi->t;
     if (start) {
         o.start = frame_state(ref, *start, &o.s0);
     }
@@ -121,7 +142,7 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
 CurvatureModel structure_model(const Pass& pass, const std::optional<Pose>& start, const std::optional<Pose>& end) {
     const auto& el = pass.design.elements;
     CurvatureModel m;
-    m.start = pass.alignment.start;
+    m.start = start.value_or(pass.alignment.start);
     m.start_free = !start;
     const auto is = [&](std::size_t j, ElementKind k) { return j < el.size() && el[j].kind == k; };
     int var = -1;
@@ -166,13 +187,27 @@ Alignment polish(const Pass& pass, const std::vector<Point2>& p, const std::vect
     so.pin_first = !start;
     so.pin_last = true;
     so.end = end;
-    so.max_iterations = 8;
+    // A tied end is first reached by a shrinking share of its gap per step
+    // (least_squares.cpp): more steps where there is one.
+    so.max_iterations = end ? 25 : 15;
     so.geodesic_acceleration = true;
     for (const double w : weight) {
         so.point_scale.push_back(std::sqrt(w));
     }
+    so.abandon_loops = true;
     const SolveReport r = solve(m, p, so);
-    return r.end_met ? m.to_alignment() : pass.alignment;
+    if (!r.end_met || r.gave_up) {
+        return pass.alignment;
+    }
+    // Kept only where it brings the nodes no further off: a solve that wandered
+    // (a loop at the curvature bound, a tie pulling across a gap) is not.
+    Alignment polished = m.to_alignment();
+    std::vector<Point> all;
+    for (const auto& q : p) {
+        all.push_back({q.x, q.y});
+    }
+    const double before = measure_fit(pass.alignment, all).max_m;
+    return measure_fit(polished, all).max_m <= before + 0.5 * sigma && !loops_back(polished, all) ? polished : pass.alignment;
 }
 
 double first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
@@ -191,7 +226,9 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
     std::vector<double> weight(p.size(), 1.0);
     const double guess = first_guess(p, weight);
     double sigma = fixed ? options.noise_sigma_m : guess;
-    Pass pass = run_pass(smooth_reference(p, smoothing_m, reference_step_m), p, weight, sigma, start, end);
+    const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
+    screen_spikes(smooth, p, weight);
+    Pass pass = run_pass(smooth, p, weight, sigma, start, end);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;

@@ -38,6 +38,12 @@ bool follows(ElementKind a, ElementKind b) { return a == ElementKind::transition
 } // namespace
 
 double element_prior(const FrameElement& e, bool chain_end, const DesignDpOptions& o) {
+    // No track curves tighter than a tram's 15 m: a hook that tight is a
+    // stray node fitted (near a free chain end, where nothing holds it).
+    constexpr double max_curvature = 1.0 / 15.0;
+    if (std::max(std::abs(e.k0), std::abs(e.k1)) > max_curvature) {
+        return 1e6;
+    }
     if (e.kind != ElementKind::transition) {
         return 0.0;
     }

@@ -21,8 +21,8 @@ double forward_pass(const std::vector<FrameNode>& nodes, const std::vector<Frame
 
 // Priors on a solved element that no quadratic can state: a transition's
 // length against the one its curvature change calls for (not at a chain
-// end, where it is cut), and a curvature sign change inside one transition
-// counted as the knot at zero it hides.
+// end, where it is cut), a curvature sign change inside one transition
+// counted as the knot at zero it hides, and no curvature beyond 1/15 m.
 double element_prior(const FrameElement& e, bool chain_end, const DesignDpOptions& o);
 
 class StructureCosts {
