@@ -93,6 +93,8 @@ void Search::seed() {
         h.f = design::empty_quad(design::first_free(k));
         if (o_.start) {
             design::add_tie(h.f, design::scaled(*o_.start), design::tie_weight);
+        } else {
+            design::add_free_end(h.f, 0.0);
         }
         h.start = o_.s0;
         h.covered = o_.s0;
@@ -234,8 +236,13 @@ std::vector<FrameElement> Search::best_path(double s1) {
     int at = -1;
     for (const Hypothesis& h : live_) {
         double v = h.value;
-        if (!o_.end && h.kind == ElementKind::transition) {
-            v += design::element_penalty(h.kind, o_, true) - design::element_penalty(h.kind, o_, false);
+        if (!o_.end) {
+            Quad g = h.f;
+            design::add_free_end(g, (s1 - h.start) / S);
+            v = design::minimum(g);
+            if (h.kind == ElementKind::transition) {
+                v += design::element_penalty(h.kind, o_, true) - design::element_penalty(h.kind, o_, false);
+            }
         }
         if (o_.end) {
             Quad g = design::to_knot(h.f, (s1 - h.start) / S);

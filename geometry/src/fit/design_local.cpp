@@ -125,6 +125,8 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
         f = design::empty_quad(design::first_free(w[0].kind));
         if (o_.start) {
             design::add_tie(f, design::scaled(*o_.start), design::tie_weight);
+        } else {
+            design::add_free_end(f, 0.0);
         }
     } else {
         f = forward_[j];
@@ -157,6 +159,7 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
     Vec4 x;
     double cost = 0.0;
     if (k == m && !o_.end) {
+        design::add_free_end(f, (w.back().s1 - w.back().s0) / S);
         cost = design::minimum(f, &x);
     } else {
         Quad g = design::to_knot(f, (w.back().s1 - w.back().s0) / S, &maps.back());

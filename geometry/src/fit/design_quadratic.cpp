@@ -246,6 +246,11 @@ double element_penalty(ElementKind k, const DesignDpOptions& o, bool at_free_end
     return params * o.parameter_penalty;
 }
 
+void add_free_end(Quad& f, double u) {
+    constexpr double sd = S * S / 500.0; // scaled curvature
+    add_row(f, Vec4(0.0, 0.0, 1.0, u), 1.0 / (sd * sd), 0.0);
+}
+
 void add_quad(Quad& a, const Quad& b) {
     a.P += b.P;
     a.q += b.q;

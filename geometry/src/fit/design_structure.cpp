@@ -53,6 +53,8 @@ double forward_pass(const std::vector<FrameNode>& n, const std::vector<FrameElem
     Quad f = design::empty_quad(design::first_free(st.front().kind));
     if (o.start) {
         design::add_tie(f, design::scaled(*o.start), design::tie_weight);
+    } else {
+        design::add_free_end(f, 0.0);
     }
     const auto free_end = [&](std::size_t j) { return (j == 0 && !o.start) || (j + 1 == m && !o.end); };
     f.c += design::element_penalty(st.front().kind, o, free_end(0));
@@ -91,6 +93,7 @@ double forward_pass(const std::vector<FrameNode>& n, const std::vector<FrameElem
         y(3) = 0.0;
         x = design::start_from_knot(map, y);
     } else {
+        design::add_free_end(f, (st.back().s1 - st.back().s0) / S);
         cost = design::minimum(f, &x);
     }
     if (last_start) {
