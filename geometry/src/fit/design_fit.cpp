@@ -31,15 +31,6 @@ struct Pass {
     std::vector<double> distance; // of every node to the design, in the frame
 };
 
-double median(std::vector<double> v) {
-    if (v.empty()) {
-        return 0.0;
-    }
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
-}
-
 // The noise scale of the residuals: their MAD, corrected for the
 // parameters the fit spent on them, pooled with a prior of `prior_nodes`
 // pseudo-nodes at `prior_m` (a scaled inverse chi-square prior). A chain of

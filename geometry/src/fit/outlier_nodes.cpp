@@ -141,6 +141,14 @@ std::size_t next_kept(const std::vector<bool>& gone, std::size_t i) {
     return gone.size();
 }
 
+// Tukey's biweight: full weight within a few scales, none beyond `limit`.
+double biweight(double r, double limit) {
+    const double u = r / limit;
+    return u >= 1.0 ? 0.0 : (1.0 - u * u) * (1.0 - u * u);
+}
+
+} // namespace
+
 double median(std::vector<double> v) {
     if (v.empty()) {
         return 0.0;
@@ -149,14 +157,6 @@ double median(std::vector<double> v) {
     std::nth_element(v.begin(), mid, v.end());
     return *mid;
 }
-
-// Tukey's biweight: full weight within a few scales, none beyond `limit`.
-double biweight(double r, double limit) {
-    const double u = r / limit;
-    return u >= 1.0 ? 0.0 : (1.0 - u * u) * (1.0 - u * u);
-}
-
-} // namespace
 
 OutlierScan find_outlier_nodes(const std::vector<Point2>& p) {
     OutlierScan scan;

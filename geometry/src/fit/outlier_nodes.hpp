@@ -28,4 +28,7 @@ struct OutlierScan {
 // chain's two end nodes (switches, buffer stops) are never marked.
 OutlierScan find_outlier_nodes(const std::vector<Point2>& p);
 
+// The upper median (0 for none): the robust scales' centre.
+double median(std::vector<double> v);
+
 } // namespace railodd::geometry::fit
