@@ -87,8 +87,39 @@ void screen_spikes(const ReferenceLine& smooth, const std::vector<Point2>& p, st
     }
 }
 
+// The previous pass's structure in this pass's frame, whose reference is
+// that pass's design from its start: a knot's chainage is its arc length
+// there. Empty where it no longer fits the span (then the search runs).
+std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOptions& o) {
+    if (!previous || previous->elements.empty()) {
+        return {};
+    }
+    std::vector<FrameElement> st = previous->elements;
+    const double shift = previous->elements.front().s0;
+    for (FrameElement& e : st) {
+        e.s0 -= shift;
+        e.s1 -= shift;
+    }
+    st.front().s0 = o.s0;
+    st.back().s1 = o.s1;
+    for (const FrameElement& e : st) {
+        if (!(e.s1 > e.s0)) {
+            return {};
+        }
+    }
+    return st;
+}
+
+std::vector<FrameNode> sorted_by_t(std::vector<FrameNode> n) {
+    std::stable_sort(n.begin(), n.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
+    return n;
+}
+
+// One pass in the frame of `ref`: the search, or where the previous pass's
+// design is given, the local search from its structure (later passes
+// refine the frame and the noise, not the structure's discovery).
 Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
-              const std::optional<Pose>& start, const std::optional<Pose>& end) {
+              const std::optional<Pose>& start, const std::optional<Pose>& end, const FrameDesign* previous) {
     std::vector<FrameNode> nodes = develop(ref, p);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         nodes[i].w = weight[i] / (sigma * sigma);
@@ -110,7 +141,8 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     o.parameter_penalty = penalty_per_log_node * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
     o.curvature_weight = curvature_weight;
     o.transition_prior = transition_prior;
-    const FrameDesign d = design_dp(nodes, o);
+    const std::vector<FrameElement> seed = carried(previous, o);
+    const FrameDesign d = seed.empty() ? design_dp(nodes, o) : refine_structure(sorted_by_t(nodes), FrameDesign{{}, seed, 0.0, 0.0}, o);
     Pass pass;
     pass.design = d;
     pass.alignment = to_alignment(ref, d);
@@ -124,8 +156,6 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     return pass;
 }
 
-// The first pass's noise and weights: the outlier scan's (outlier_nodes.hpp),
-// spikes left out, where enough nodes lie close together to tell a scale.
 // The design as clothoids whose knots keep its structure (lines at zero
 // curvature, an arc's two knots one variable, a transition meeting a line or
 // another transition at zero), every length free: what the exact polish
@@ -201,6 +231,8 @@ Alignment polish(const Pass& pass, const std::vector<Point2>& p, const std::vect
     return measure_fit(polished, all).max_m <= before + 0.5 * sigma && !loops_back(polished, all) ? polished : pass.alignment;
 }
 
+// The first pass's noise and weights: the outlier scan's (outlier_nodes.hpp),
+// spikes left out, where enough nodes lie close together to tell a scale.
 double first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
     const OutlierScan scan = find_outlier_nodes(p);
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -219,13 +251,15 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
-    Pass pass = run_pass(smooth, p, weight, sigma, start, end);
+    Pass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
         sigma = next;
         weight = robust_weights(pass.distance, sigma);
-        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end);
+        const FrameDesign previous = pass.design;
+        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end,
+                        round > 0 ? &previous : nullptr);
         if (settled) {
             break;
         }
