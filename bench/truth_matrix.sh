@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The truth bench over every regime issue 37 names: node spacing (OSM-like,
 # dense, sparse) x sigma, for one fit method, as one table row per regime.
-# Usage: bench/truth_matrix.sh [windowed|design] [ROUTES] [SIGMAS...]
-# (defaults: windowed, 300 routes, sigma 0.1 0.3 1.0 2.0; 1 % outliers).
+# Usage: [OUTLIERS=F] bench/truth_matrix.sh [windowed|design] [ROUTES] [SIGMAS...]
+# (defaults: windowed, 300 routes, sigma 0.1 0.3 1.0 2.0; OUTLIERS, the
+# share of outlier nodes, 0.01).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 method=${1:-windowed}
@@ -14,7 +15,7 @@ echo "| spacing | sigma | routes max > 1 m | route max p50 / p95 / max (m) | rou
 echo "|---|---|---|---|---|---|---|---|---|---|"
 for spacing in osm dense sparse; do
   for s in $sigmas; do
-    "$bin" "$routes" "$s" --spacing "$spacing" --method "$method" | python3 -c '
+    "$bin" "$routes" "$s" --spacing "$spacing" --method "$method" --outliers "${OUTLIERS:-0.01}" | python3 -c '
 import re, sys
 t = sys.stdin.read()
 g = lambda p: re.search(p, t).groups()

@@ -7,6 +7,7 @@
 #include "design_dp.hpp"
 
 #include "design_quadratic.hpp"
+#include "design_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,6 @@ namespace {
 
 using design::Quad;
 using design::S;
-using design::Vec4;
 
 struct Record {
     int parent = -1;
@@ -32,7 +32,6 @@ struct Hypothesis {
     double start = 0.0;
     ElementKind kind = ElementKind::line;
     int record = 0;
-    double penalties = 0.0; // included in f.c
     double value = 0.0;     // minimum of f: data, priors and penalties so far
     int seen = 0;           // nodes taken since the element opened
     double covered = 0.0;   // the curvature prior is in f up to this chainage
@@ -42,30 +41,6 @@ struct Hypothesis {
 // curvature slope is not yet told by the data, and older rivals that fitted
 // the noise a little would crowd it out before it could show its merit.
 constexpr int fresh_nodes = 2;
-
-double min_length(ElementKind k, const DesignDpOptions& o) {
-    return k == ElementKind::line ? o.min_line_m : k == ElementKind::arc ? o.min_arc_m : o.min_transition_m;
-}
-
-// Successors the design rules allow: a line and an arc are entered and left
-// through transitions; two transitions meet at zero curvature (a reverse
-// curve) or at an arc.
-int successors(ElementKind k, ElementKind* out) {
-    switch (k) {
-    case ElementKind::line:
-        out[0] = ElementKind::transition;
-        return 1;
-    case ElementKind::arc:
-        out[0] = ElementKind::transition;
-        return 1;
-    case ElementKind::transition:
-        out[0] = ElementKind::arc;
-        out[1] = ElementKind::line;
-        out[2] = ElementKind::transition;
-        return 3;
-    }
-    return 0;
-}
 
 class Search {
 public:
@@ -88,26 +63,20 @@ private:
 };
 
 void Search::seed() {
-    for (const ElementKind k : {ElementKind::line, ElementKind::transition, ElementKind::arc}) {
+    for (const ElementKind k : design::kinds) {
         Hypothesis h;
-        h.f = design::empty_quad(design::first_free(k));
-        if (o_.start) {
-            design::add_tie(h.f, design::scaled(*o_.start), design::tie_weight);
-        } else {
-            design::add_free_end(h.f, 0.0);
-        }
+        h.f = design::first_element(k, o_);
+        h.f.c += design::element_penalty(k, o_, !o_.start);
         h.start = o_.s0;
         h.covered = o_.s0;
         h.kind = k;
         h.record = static_cast<int>(records_.size());
         records_.push_back({-1, o_.s0, k});
-        h.penalties = design::element_penalty(k, o_, !o_.start);
-        h.f.c += h.penalties;
         live_.push_back(std::move(h));
     }
 }
 
-// Every live hypothesis takes the nodes up to `to`.
+// The curvature prior up to `to`.
 void Search::cover(Hypothesis& h, double to) const {
     if (o_.curvature_weight > 0.0 && to > h.covered) {
         design::add_curvature(h.f, (h.covered - h.start) / S, (to - h.start) / S, o_.curvature_weight);
@@ -115,15 +84,14 @@ void Search::cover(Hypothesis& h, double to) const {
     h.covered = std::max(h.covered, to);
 }
 
+// Every live hypothesis takes the nodes up to `to`.
 void Search::advance(double to, std::size_t& next) {
     const std::size_t first = next;
     while (next < n_.size() && n_[next].t <= to) {
         ++next;
     }
     for (Hypothesis& h : live_) {
-        for (std::size_t i = first; i < next; ++i) {
-            design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
-        }
+        design::add_nodes(h.f, n_, first, next, h.start);
         h.seen += static_cast<int>(next - first);
         if (next > first) {
             // The prior is brought up to date only where nodes came: the
@@ -141,21 +109,18 @@ void Search::spawn(double s) {
     std::vector<Hypothesis> children[3];
     std::vector<int> parents[3];
     for (const Hypothesis& h : live_) {
-        if (s - h.start < min_length(h.kind, o_) - 1e-9) {
+        if (s - h.start < design::min_length(h.kind, o_) - 1e-9) {
             continue;
         }
-        ElementKind next[3];
-        const int m = successors(h.kind, next);
         const Quad knot = design::to_knot(h.f, (s - h.start) / S);
-        for (int j = 0; j < m; ++j) {
+        for (const ElementKind kind : design::kinds) {
             Hypothesis g;
             g.f = knot;
-            const ElementKind kind = next[j];
-            if (!design::open_element(g.f, kind, h.kind == ElementKind::transition && kind == ElementKind::transition)) {
+            if (!design::may_follow(h.kind, kind) ||
+                !design::open_element(g.f, kind, h.kind == ElementKind::transition && kind == ElementKind::transition)) {
                 continue;
             }
-            g.penalties = design::element_penalty(kind, o_, false);
-            g.f.c += g.penalties;
+            g.f.c += design::element_penalty(kind, o_, false);
             g.start = s;
             g.covered = s;
             g.kind = kind;
@@ -235,20 +200,13 @@ std::vector<FrameElement> Search::best_path(double s1) {
     double best = std::numeric_limits<double>::infinity();
     int at = -1;
     for (const Hypothesis& h : live_) {
-        double v = h.value;
-        if (!o_.end) {
-            Quad g = h.f;
-            design::add_free_end(g, (s1 - h.start) / S);
-            v = design::minimum(g);
-            if (h.kind == ElementKind::transition) {
-                v += design::element_penalty(h.kind, o_, true) - design::element_penalty(h.kind, o_, false);
-            }
-        }
-        if (o_.end) {
-            Quad g = design::to_knot(h.f, (s1 - h.start) / S);
-            design::add_tie(g, design::scaled(*o_.end), design::tie_weight);
-            v = design::minimum(g);
-        }
+        // The last element at a free end: a transition's curvature there is
+        // one more parameter.
+        const bool free_transition = !o_.end && h.kind == ElementKind::transition;
+        const double v = design::close_chain(h.f, (s1 - h.start) / S, o_) +
+                         (free_transition ? design::element_penalty(h.kind, o_, true) -
+                                                design::element_penalty(h.kind, o_, false)
+                                          : 0.0);
         if (v < best) {
             best = v;
             at = h.record;
@@ -275,9 +233,7 @@ std::vector<FrameElement> Search::run() {
     }
     // Nodes before the range (none where s0 is the first node's chainage) count at its start.
     for (Hypothesis& h : live_) {
-        for (std::size_t i = 0; i < next; ++i) {
-            design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
-        }
+        design::add_nodes(h.f, n_, 0, next, h.start);
     }
     for (std::size_t k = 1; k <= steps; ++k) {
         const double to = k == steps ? o_.s1 : o_.s0 + static_cast<double>(k) * o_.knot_step_m;
@@ -290,11 +246,8 @@ std::vector<FrameElement> Search::run() {
     }
     // Nodes past the range count at its end.
     for (Hypothesis& h : live_) {
-        for (std::size_t i = next; i < n_.size(); ++i) {
-            design::add_row(h.f, design::node_row((n_[i].t - h.start) / S), n_[i].w, n_[i].z);
-        }
+        design::add_nodes(h.f, n_, next, n_.size(), h.start);
         cover(h, o_.s1);
-        h.value = design::minimum(h.f);
     }
     return best_path(o_.s1);
 }
@@ -311,11 +264,10 @@ FrameDesign design_dp(const std::vector<FrameNode>& nodes, const DesignDpOptions
     if (nodes.empty() || !(o.s1 > o.s0) || !(o.knot_step_m > 0.0)) {
         throw std::invalid_argument("design_dp: no nodes or an empty chainage range");
     }
-    std::vector<FrameNode> sorted = nodes;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
+    const std::vector<FrameNode> sorted = by_chainage(nodes);
     Search search(sorted, o);
-    const FrameDesign found = solve_structure(sorted, search.run(), o);
-    return o.refine ? refine_structure(sorted, found, o) : found;
+    const std::vector<FrameElement> structure = search.run();
+    return o.refine ? refine_structure(sorted, structure, o) : solve_structure(sorted, structure, o);
 }
 
 } // namespace railodd::geometry::fit

@@ -66,13 +66,18 @@ struct FrameDesign {
 // design speed from 150 mm cant plus 100 mm deficiency, about 0.45 m per km/h.
 double transition_length_for(double curvature);
 
-// Local search on a design: knots moved and elements merged away while the
-// exact cost falls (design_refine.cpp).
-FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const FrameDesign& design,
+// Local search from a structure: knots moved, elements of another kind,
+// split or merged away while the exact cost falls (design_refine.cpp).
+// Nodes in any order.
+FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& structure,
                              const DesignDpOptions& options);
 
-// z of the design at chainage t (its first or last element extended beyond its ends).
-double frame_z(const FrameDesign& design, double t);
+// The nodes in order of chainage (stable: nodes at one chainage keep theirs).
+std::vector<FrameNode> by_chainage(std::vector<FrameNode> nodes);
+
+// Each node's z less the design's at its chainage (the first and last
+// elements extended beyond their ends), in the nodes' order: one sweep.
+std::vector<double> frame_residuals(const FrameDesign& design, const std::vector<FrameNode>& nodes);
 
 // Nodes in any order; at least one. Throws std::invalid_argument for an
 // empty range or no nodes.

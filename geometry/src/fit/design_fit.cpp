@@ -4,7 +4,6 @@
 #include "design_dp.hpp"
 #include "outlier_nodes.hpp"
 #include "reference_line.hpp"
-#include "railodd/geometry/indexed_alignment.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +26,18 @@ constexpr double transition_prior = 3.0;
 struct Pass {
     FrameDesign design;
     Alignment alignment;
-    std::size_t parameters = 0;
     std::vector<double> distance; // of every node to the design, in the frame
 };
+
+// The parameters the design spent on the nodes: the start state and each
+// element's length, a transition's slope besides.
+std::size_t parameters(const FrameDesign& d) {
+    std::size_t k = 3;
+    for (const auto& e : d.elements) {
+        k += e.kind == ElementKind::transition ? 2 : 1;
+    }
+    return k;
+}
 
 // The noise scale of the residuals: their MAD, corrected for the
 // parameters the fit spent on them, pooled with a prior of `prior_nodes`
@@ -46,7 +54,7 @@ double residual_sigma(const Pass& pass, const std::vector<double>& weight, doubl
         }
     }
     const double n = static_cast<double>(kept.size());
-    const double dof = std::max(0.0, n - static_cast<double>(pass.parameters));
+    const double dof = std::max(0.0, n - static_cast<double>(parameters(pass.design)));
     const double mad = 1.4826 * median(kept);
     const double var = (n * mad * mad + prior_nodes * prior_m * prior_m) / (dof + prior_nodes);
     return std::clamp(std::sqrt(var), 0.02, 10.0);
@@ -110,11 +118,6 @@ std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOpt
     return st;
 }
 
-std::vector<FrameNode> sorted_by_t(std::vector<FrameNode> n) {
-    std::stable_sort(n.begin(), n.end(), [](const FrameNode& a, const FrameNode& b) { return a.t < b.t; });
-    return n;
-}
-
 // One pass in the frame of `ref`: the search, or where the previous pass's
 // design is given, the local search from its structure (later passes
 // refine the frame and the noise, not the structure's discovery).
@@ -142,16 +145,11 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     o.curvature_weight = curvature_weight;
     o.transition_prior = transition_prior;
     const std::vector<FrameElement> seed = carried(previous, o);
-    const FrameDesign d = seed.empty() ? design_dp(nodes, o) : refine_structure(sorted_by_t(nodes), FrameDesign{{}, seed, 0.0, 0.0}, o);
     Pass pass;
-    pass.design = d;
-    pass.alignment = to_alignment(ref, d);
-    pass.parameters = 3;
-    for (const auto& e : d.elements) {
-        pass.parameters += e.kind == ElementKind::transition ? 2 : 1;
-    }
-    for (const FrameNode& n : nodes) {
-        pass.distance.push_back(std::abs(n.z - frame_z(d, n.t)));
+    pass.design = seed.empty() ? design_dp(nodes, o) : refine_structure(nodes, seed, o);
+    pass.alignment = to_alignment(ref, pass.design);
+    for (const double r : frame_residuals(pass.design, nodes)) {
+        pass.distance.push_back(std::abs(r));
     }
     return pass;
 }
@@ -166,17 +164,12 @@ CurvatureModel structure_model(const Pass& pass, const std::optional<Pose>& star
     m.start = start.value_or(pass.alignment.start);
     m.start_free = !start;
     const auto is = [&](std::size_t j, ElementKind k) { return j < el.size() && el[j].kind == k; };
-    int var = -1;
-    if (is(0, ElementKind::line)) {
+    if (is(0, ElementKind::line) || start) {
         m.knot_var.push_back(-1);
-        m.knot_fixed.push_back(0.0);
-    } else if (start) {
-        m.knot_var.push_back(-1);
-        m.knot_fixed.push_back(start->curvature);
+        m.knot_fixed.push_back(is(0, ElementKind::line) ? 0.0 : start->curvature);
     } else {
         m.curv.push_back(el[0].k0);
-        var = static_cast<int>(m.curv.size()) - 1;
-        m.knot_var.push_back(var);
+        m.knot_var.push_back(0);
         m.knot_fixed.push_back(0.0);
     }
     for (std::size_t j = 0; j < el.size(); ++j) {
@@ -199,9 +192,11 @@ CurvatureModel structure_model(const Pass& pass, const std::optional<Pose>& star
 
 // A few Levenberg-Marquardt steps on exact clothoids with the structure
 // fixed: what the frame's small-angle model left (second order in the
-// offsets, the lengths along a curve).
-Alignment polish(const Pass& pass, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
-                 const std::optional<Pose>& start, const std::optional<Pose>& end) {
+// offsets, the lengths along a curve). The alignment kept and its distances
+// to the nodes (`all`, the same nodes as p).
+FitResult polish(const Pass& pass, const std::vector<Point2>& p, const std::vector<Point>& all,
+                 const std::vector<double>& weight, double sigma, const std::optional<Pose>& start,
+                 const std::optional<Pose>& end) {
     CurvatureModel m = structure_model(pass, start, end);
     SolveOptions so;
     so.sigma_m = sigma;
@@ -217,18 +212,16 @@ Alignment polish(const Pass& pass, const std::vector<Point2>& p, const std::vect
     }
     so.abandon_loops = true;
     const SolveReport r = solve(m, p, so);
+    FitResult before{pass.alignment, measure_fit(pass.alignment, all)};
     if (!r.end_met || r.gave_up) {
-        return pass.alignment;
+        return before;
     }
     // Kept only where it brings the nodes no further off: a solve that wandered
     // (a loop at the curvature bound, a tie pulling across a gap) is not.
-    Alignment polished = m.to_alignment();
-    std::vector<Point> all;
-    for (const auto& q : p) {
-        all.push_back({q.x, q.y});
-    }
-    const double before = measure_fit(pass.alignment, all).max_m;
-    return measure_fit(polished, all).max_m <= before + 0.5 * sigma && !loops_back(polished, all) ? polished : pass.alignment;
+    FitResult polished{m.to_alignment(), {}};
+    polished.quality = measure_fit(polished.alignment, all);
+    const bool kept = polished.quality.max_m <= before.quality.max_m + 0.5 * sigma && !loops_back(polished.alignment, all);
+    return kept ? polished : before;
 }
 
 // The first pass's noise and weights: the outlier scan's (outlier_nodes.hpp),
@@ -264,13 +257,11 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
             break;
         }
     }
-    FitResult r;
-    r.alignment = polish(pass, p, weight, sigma, start, end);
     std::vector<Point> all;
     for (const auto& q : p) {
         all.push_back({q.x, q.y});
     }
-    r.quality = measure_fit(r.alignment, all);
+    FitResult r = polish(pass, p, all, weight, sigma, start, end);
     r.quality.noise_sigma_m = sigma;
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));

@@ -29,12 +29,6 @@ Quad mirror(Quad q) {
     return q;
 }
 
-double min_length(ElementKind k, const DesignDpOptions& o) {
-    return k == ElementKind::line ? o.min_line_m : k == ElementKind::arc ? o.min_arc_m : o.min_transition_m;
-}
-
-bool follows(ElementKind a, ElementKind b) { return a == ElementKind::transition || b == ElementKind::transition; }
-
 } // namespace
 
 double element_prior(const FrameElement& e, bool chain_end, const DesignDpOptions& o) {
@@ -73,19 +67,20 @@ StructureCosts::StructureCosts(const std::vector<FrameNode>& nodes, const Design
 void StructureCosts::reset(const std::vector<FrameElement>& st) {
     st_ = st;
     const std::size_t m = st.size();
-    cost_ = forward_pass(n_, st, o_, &forward_, nullptr, nullptr);
+    ForwardPass forward = forward_pass(n_, st, o_);
+    cost_ = forward.cost;
+    const FrameDesign d = solved(st, forward);
+    forward_ = std::move(forward.knots);
     std::vector<FrameElement> ms;
     for (std::size_t i = 0; i < m; ++i) {
         const FrameElement& e = st[m - 1 - i];
         ms.push_back({e.kind, -e.s1, -e.s0, 0.0, 0.0});
     }
-    std::vector<Quad> mk;
-    forward_pass(mirrored_, ms, mirror_options_, &mk, nullptr, nullptr);
+    const std::vector<Quad> mk = forward_pass(mirrored_, ms, mirror_options_).knots;
     backward_.assign(m + 1, Quad{});
     for (std::size_t k = 1; k < m; ++k) {
         backward_[k] = mirror(mk[m - k]);
     }
-    const FrameDesign d = solve_structure(n_, st, o_);
     prior_.assign(m, 0.0);
     prior_total_ = 0.0;
     for (std::size_t j = 0; j < m; ++j) {
@@ -99,16 +94,16 @@ bool StructureCosts::allowed(std::size_t j, std::size_t k, const std::vector<Fra
     for (std::size_t i = 0; i < w.size(); ++i) {
         const double len = w[i].s1 - w[i].s0;
         const bool chain_last = k == m && i + 1 == w.size();
-        if (!(len > 0.0) || (!chain_last && len < min_length(w[i].kind, o_) - 1e-9)) {
+        if (!(len > 0.0) || (!chain_last && len < design::min_length(w[i].kind, o_) - 1e-9)) {
             return false;
         }
         const bool has_prev = i > 0 || j > 0;
         const ElementKind prev = i > 0 ? w[i - 1].kind : (j > 0 ? st_[j - 1].kind : ElementKind::line);
-        if (has_prev && !follows(prev, w[i].kind)) {
+        if (has_prev && !design::may_follow(prev, w[i].kind)) {
             return false;
         }
     }
-    return k == m || follows(w.back().kind, st_[k].kind);
+    return k == m || design::may_follow(w.back().kind, st_[k].kind);
 }
 
 double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const {
@@ -117,17 +112,11 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
     }
     const std::size_t m = st_.size();
     const auto by_t = [](double v, const FrameNode& a) { return v < a.t; };
-    std::size_t next = j == 0 ? 0 : static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), st_[j - 1].s1, by_t) - n_.begin());
+    const std::size_t next = j == 0 ? 0 : static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), st_[j - 1].s1, by_t) - n_.begin());
     const std::size_t end = k == m ? n_.size() : static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), st_[k - 1].s1, by_t) - n_.begin());
-    const auto free_end = [&](std::size_t i) { return (j == 0 && i == 0 && !o_.start) || (k == m && i + 1 == w.size() && !o_.end); };
     Quad f;
     if (j == 0) {
-        f = design::empty_quad(design::first_free(w[0].kind));
-        if (o_.start) {
-            design::add_tie(f, design::scaled(*o_.start), design::tie_weight);
-        } else {
-            design::add_free_end(f, 0.0);
-        }
+        f = design::first_element(w[0].kind, o_);
     } else {
         f = forward_[j];
         const bool after_transition = st_[j - 1].kind == ElementKind::transition && w[0].kind == ElementKind::transition;
@@ -135,45 +124,24 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
             return infinite;
         }
     }
-    f.c += design::element_penalty(w[0].kind, o_, free_end(0));
     std::vector<design::KnotMap> maps(w.size());
-    for (std::size_t i = 0;; ++i) {
-        const bool last = i + 1 == w.size();
-        for (; next < end && (last || n_[next].t <= w[i].s1); ++next) {
-            design::add_row(f, design::node_row((n_[next].t - w[i].s0) / S), n_[next].w, n_[next].z);
-        }
-        if (o_.curvature_weight > 0.0) {
-            design::add_curvature(f, 0.0, (w[i].s1 - w[i].s0) / S, o_.curvature_weight);
-        }
-        if (last) {
-            break;
-        }
-        Quad g = design::to_knot(f, (w[i].s1 - w[i].s0) / S, &maps[i]);
-        const bool tt = w[i].kind == ElementKind::transition && w[i + 1].kind == ElementKind::transition;
-        if (!design::open_element(g, w[i + 1].kind, tt)) {
-            return infinite;
-        }
-        g.c += design::element_penalty(w[i + 1].kind, o_, free_end(i + 1));
-        f = g;
+    if (!walk(f, w, n_, next, end, o_, j == 0 && !o_.start, k == m && !o_.end, &maps, nullptr)) {
+        return infinite;
     }
+    const double u = (w.back().s1 - w.back().s0) / S;
     Vec4 x;
     double cost = 0.0;
-    if (k == m && !o_.end) {
-        design::add_free_end(f, (w.back().s1 - w.back().s0) / S);
-        cost = design::minimum(f, &x);
+    if (k == m) {
+        cost = design::close_chain(f, u, o_, &x);
     } else {
-        Quad g = design::to_knot(f, (w.back().s1 - w.back().s0) / S, &maps.back());
-        if (k == m) {
-            design::add_tie(g, design::scaled(*o_.end), design::tie_weight);
-        } else {
-            if (st_[k].kind == ElementKind::transition && w.back().kind == ElementKind::transition) {
-                design::fix_zero(g, 2);
-            }
-            if (st_[k].kind == ElementKind::arc && !(g.free & 4u)) {
-                return infinite;
-            }
-            design::add_quad(g, backward_[k]);
+        Quad g = design::to_knot(f, u, &maps.back());
+        if (st_[k].kind == ElementKind::transition && w.back().kind == ElementKind::transition) {
+            design::fix_zero(g, 2);
         }
+        if (st_[k].kind == ElementKind::arc && !(g.free & 4u)) {
+            return infinite;
+        }
+        design::add_quad(g, backward_[k]);
         Vec4 y;
         cost = design::minimum(g, &y);
         y(3) = 0.0;

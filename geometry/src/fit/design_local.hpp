@@ -8,16 +8,37 @@
 // (design_refine.cpp) tries thousands of times per chain.
 #include "design_dp.hpp"
 #include "design_quadratic.hpp"
+#include "design_rules.hpp"
 
 #include <vector>
 
 namespace railodd::geometry::fit {
 
-// The forward pass over a structure: its cost; optionally the knot costs
-// before each element opens (knots[j] for j in 1..m-1), the knot maps for
+// A run of elements from the cost f of its first, already open: the nodes
+// [next, end) in, its first element's penalty, every knot crossed by the
+// design rules and the next element's penalty added; the run's first and
+// last elements may sit at a free chain end (their penalty says so).
+// maps[i] / knots[i + 1], where given, receive the knot after w[i] (the knot
+// cost before the next element opens). False where a knot forbids the next
+// element; f ends as the last element's cost. Nodes sorted by t.
+bool walk(design::Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& nodes, std::size_t next,
+          std::size_t end, const DesignDpOptions& o, bool first_at_free_end, bool last_at_free_end,
+          std::vector<design::KnotMap>* maps, std::vector<design::Quad>* knots);
+
+// The forward pass over a whole structure: its cost, the knot costs before
+// each element opens (knots[j] for j in 1..m-1), the knot maps for
 // backtracking and the last element's start state. Nodes sorted by t.
-double forward_pass(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& st, const DesignDpOptions& o,
-                    std::vector<design::Quad>* knots, std::vector<design::KnotMap>* maps, design::Vec4* last_start);
+struct ForwardPass {
+    double cost = 0.0;
+    std::vector<design::Quad> knots;
+    std::vector<design::KnotMap> maps;
+    design::Vec4 last_start = design::Vec4::Zero();
+};
+ForwardPass forward_pass(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& st, const DesignDpOptions& o);
+
+// The structure with every knot's state, backtracked from the last
+// element's start (no data cost).
+FrameDesign solved(const std::vector<FrameElement>& st, const ForwardPass& pass);
 
 // Priors on a solved element that no quadratic can state: a transition's
 // length against the one its curvature change calls for (not at a chain

@@ -239,18 +239,6 @@ bool open_element(Quad& f, ElementKind kind, bool after_transition) {
     return false;
 }
 
-Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
-
-double element_penalty(ElementKind k, const DesignDpOptions& o, bool at_free_end) {
-    const double params = k == ElementKind::arc ? 2.0 : (k == ElementKind::transition && at_free_end) ? 2.0 : 1.0;
-    return params * o.parameter_penalty;
-}
-
-void add_free_end(Quad& f, double u) {
-    constexpr double sd = S * S / 500.0; // scaled curvature
-    add_row(f, Vec4(0.0, 0.0, 1.0, u), 1.0 / (sd * sd), 0.0);
-}
-
 void add_quad(Quad& a, const Quad& b) {
     a.P += b.P;
     a.q += b.q;

@@ -74,23 +74,6 @@ bool open_element(Quad& knot, ElementKind kind, bool after_transition);
 // Free coordinates of the first element of a design.
 unsigned first_free(ElementKind kind);
 
-// A tie holds the scaled state to well under a millimetre.
-constexpr double tie_weight = 1e9;
-
-Vec4 scaled(const FrameState& s);
-
-// The L0 penalty of an element: one parameter for its length, one more for
-// an arc's curvature, and one more for a transition at a free chain end
-// (its curvature there is free: a chain that is not tied starts and ends
-// straight or in a curve, seldom inside a transition).
-double element_penalty(ElementKind kind, const DesignDpOptions& o, bool at_free_end);
-
-// A free chain end's curvature held weakly to zero (sd 1/500 m): a chain
-// cut inside a curve keeps it for little, while a hook across the gap to
-// the next node, which the nodes cannot see, costs as much as an element.
-// u: the end's scaled distance from the element's start.
-void add_free_end(Quad& f, double u);
-
 // Adds b to a; a coordinate that is no variable in either is none in the sum.
 void add_quad(Quad& a, const Quad& b);
 

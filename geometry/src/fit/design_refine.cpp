@@ -6,6 +6,7 @@
 // elements it changes (StructureCosts).
 #include "design_dp.hpp"
 #include "design_local.hpp"
+#include "design_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +15,6 @@
 namespace railodd::geometry::fit {
 
 namespace {
-
-constexpr ElementKind kinds[3] = {ElementKind::line, ElementKind::transition, ElementKind::arc};
 
 struct Move {
     std::size_t j = 0, k = 0; // elements [j, k) replaced
@@ -87,7 +86,7 @@ private:
         if (j + 2 < st.size()) {
             // Three into one: an arc split by a near-constant transition, a
             // short curve between two transitions.
-            for (const ElementKind k : kinds) {
+            for (const ElementKind k : design::kinds) {
                 offer(j, j + 3, {FrameElement{k, st[j].s0, st[j + 2].s1, 0.0, 0.0}}, best);
             }
             const double mid = 0.5 * (st[j + 1].s0 + st[j + 1].s1);
@@ -102,15 +101,15 @@ private:
     // into two with a line between (a reverse curve's straight).
     void try_splits(const std::vector<FrameElement>& st, std::size_t j, Move& best) const {
         const FrameElement& e = st[j];
-        for (const ElementKind k : kinds) {
+        for (const ElementKind k : design::kinds) {
             if (k != e.kind) {
                 offer(j, j + 1, {FrameElement{k, e.s0, e.s1, 0.0, 0.0}}, best);
             }
         }
         for (const double f : {0.25, 0.5, 0.75}) {
             const double at = e.s0 + f * (e.s1 - e.s0);
-            for (const ElementKind a : kinds) {
-                for (const ElementKind b : kinds) {
+            for (const ElementKind a : design::kinds) {
+                for (const ElementKind b : design::kinds) {
                     offer(j, j + 1, {FrameElement{a, e.s0, at, 0.0, 0.0}, FrameElement{b, at, e.s1, 0.0, 0.0}}, best);
                 }
             }
@@ -130,10 +129,11 @@ private:
 
 } // namespace
 
-FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const FrameDesign& design,
+FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& structure,
                              const DesignDpOptions& o) {
-    Refiner r(nodes, o);
-    return solve_structure(nodes, r.run(design.elements), o);
+    const std::vector<FrameNode> sorted = by_chainage(nodes);
+    Refiner r(sorted, o);
+    return solve_structure(sorted, r.run(structure), o);
 }
 
 } // namespace railodd::geometry::fit

@@ -1,0 +1,58 @@
+#include "design_rules.hpp"
+
+namespace railodd::geometry::fit::design {
+
+Vec4 scaled(const FrameState& s) { return {s.z, s.dz * S, s.k * S * S, 0.0}; }
+
+bool may_follow(ElementKind before, ElementKind after) {
+    return before == ElementKind::transition || after == ElementKind::transition;
+}
+
+double min_length(ElementKind k, const DesignDpOptions& o) {
+    return k == ElementKind::line ? o.min_line_m : k == ElementKind::arc ? o.min_arc_m : o.min_transition_m;
+}
+
+double element_penalty(ElementKind k, const DesignDpOptions& o, bool at_free_end) {
+    const double params = k == ElementKind::arc ? 2.0 : (k == ElementKind::transition && at_free_end) ? 2.0 : 1.0;
+    return params * o.parameter_penalty;
+}
+
+void add_free_end(Quad& f, double u) {
+    constexpr double sd = S * S / 500.0; // scaled curvature
+    add_row(f, Vec4(0.0, 0.0, 1.0, u), 1.0 / (sd * sd), 0.0);
+}
+
+Quad first_element(ElementKind kind, const DesignDpOptions& o) {
+    Quad f = empty_quad(first_free(kind));
+    if (o.start) {
+        add_tie(f, scaled(*o.start), tie_weight);
+    } else {
+        add_free_end(f, 0.0);
+    }
+    return f;
+}
+
+void add_nodes(Quad& f, const std::vector<FrameNode>& n, std::size_t first, std::size_t last, double s0) {
+    for (std::size_t i = first; i < last; ++i) {
+        add_row(f, node_row((n[i].t - s0) / S), n[i].w, n[i].z);
+    }
+}
+
+double close_chain(Quad f, double u, const DesignDpOptions& o, Vec4* start) {
+    if (!o.end) {
+        add_free_end(f, u);
+        return minimum(f, start);
+    }
+    KnotMap map;
+    Quad g = to_knot(f, u, &map);
+    add_tie(g, scaled(*o.end), tie_weight);
+    Vec4 y;
+    const double cost = minimum(g, &y);
+    if (start) {
+        y(3) = 0.0;
+        *start = start_from_knot(map, y);
+    }
+    return cost;
+}
+
+} // namespace railodd::geometry::fit::design

@@ -1,0 +1,54 @@
+#pragma once
+// The railway's design rules and the costs of a design's ends, shared by the
+// search (design_dp.cpp), the exact solve of a structure
+// (design_structure.cpp) and its local costs (design_local.cpp): which
+// element may follow which, how long each must be, what an element costs,
+// and how a chain starts and ends (tied to a pose, or free with its
+// curvature held weakly to zero).
+#include "design_dp.hpp"
+#include "design_quadratic.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace railodd::geometry::fit::design {
+
+constexpr ElementKind kinds[3] = {ElementKind::line, ElementKind::transition, ElementKind::arc};
+
+// A tie holds the scaled state to well under a millimetre.
+constexpr double tie_weight = 1e9;
+
+Vec4 scaled(const FrameState& s);
+
+// A line and an arc are entered and left through transitions; two
+// transitions meet at zero curvature (a reverse curve) or at an arc.
+bool may_follow(ElementKind before, ElementKind after);
+
+// An element's shortest length, unless it ends the chain.
+double min_length(ElementKind kind, const DesignDpOptions& o);
+
+// The L0 penalty of an element: one parameter for its length, one more for
+// an arc's curvature, and one more for a transition at a free chain end
+// (its curvature there is free: a chain that is not tied starts and ends
+// straight or in a curve, seldom inside a transition).
+double element_penalty(ElementKind kind, const DesignDpOptions& o, bool at_free_end);
+
+// A free chain end's curvature held weakly to zero (sd 1/500 m): a chain
+// cut inside a curve keeps it for little, while a hook across the gap to
+// the next node, which the nodes cannot see, costs as much as an element.
+// u: the end's scaled distance from the element's start.
+void add_free_end(Quad& f, double u);
+
+// The cost of a chain's first element of `kind` before any node: its
+// start tied, or free.
+Quad first_element(ElementKind kind, const DesignDpOptions& o);
+
+// The nodes [first, last) into the cost of an element starting at s0.
+void add_nodes(Quad& f, const std::vector<FrameNode>& n, std::size_t first, std::size_t last, double s0);
+
+// The cost of a chain whose last element's cost is f, that element u
+// (scaled) long: its end tied, or free. The last element's start state in
+// *start (where given).
+double close_chain(Quad f, double u, const DesignDpOptions& o, Vec4* start = nullptr);
+
+} // namespace railodd::geometry::fit::design
