@@ -139,10 +139,11 @@ void print_table(const std::vector<RouteResult>& results, const json& counts, do
 // The steps run in OUTROOT on the relative folder ID (inputs are absolute):
 // paths the outputs record (manifest.json's map_dir) are then the same
 // wherever OUTROOT is, and the outputs of two roots compare byte for byte.
-BatchTask make_task(const BatchRoute& route, const fs::path& root, bool single_thread) {
+BatchTask make_task(const BatchRoute& route, const fs::path& root, bool single_thread, double timeout_s) {
     const fs::path abs = fs::absolute(root);
     const fs::path dir{route.id};
-    BatchTask t{route.id, {{"convert", convert_args(route, dir, single_thread), abs / dir / "convert.log", abs, {}}}};
+    BatchTask t{route.id, {{"convert", convert_args(route, dir, single_thread), abs / dir / "convert.log", abs, {}}},
+                route.timeout_s.value_or(timeout_s)};
     if (route.scenarios) {
         t.steps.push_back({"scenarios", scenarios_args(route, dir), abs / dir / "scenarios.log", abs, {}});
     }
@@ -195,7 +196,7 @@ int BatchCommand::run() {
             throw OutputError(dir.string(), "cannot create the route's folder: " + ec.message());
         }
         remove_stamp(dir);
-        tasks.push_back(make_task(route, root, opt_.jobs > 1));
+        tasks.push_back(make_task(route, root, opt_.jobs > 1, opt_.route_timeout_s));
         task_result.push_back(i);
     }
     run_tasks(
@@ -213,7 +214,7 @@ int BatchCommand::run() {
         }
         progress.finished(r.route->id, r.status, o.seconds,
                           r.outcome.ok ? "" : r.outcome.failed_step + ": " + r.outcome.error);
-        }, opt_.route_timeout_s);
+        });
     progress.close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const std::string suffix = shard_suffix(shard_index_, shard_count_);

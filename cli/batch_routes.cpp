@@ -53,7 +53,7 @@ constexpr Key scenario_keys[] = {
 const std::initializer_list<std::string_view> route_keys = {
     "id", "input", "scenarios", "bbox", "polygon", "relation", "field_mapping", "dem", "road_corridor",
     "node_noise", "feature_distance", "station_distance", "estimate_cant", "debug_outputs", "odd_user_data",
-    "odr_version", "taxonomy", "from", "to"};
+    "odr_version", "taxonomy", "from", "to", "timeout"};
 const std::initializer_list<std::string_view> scenario_key_names = {
     "strategy", "count", "seed", "templates", "catalog", "max_anchors", "odd_spec", "osc_version"};
 
@@ -192,6 +192,12 @@ BatchRoute read_route(const Reader& rd, const YAML::Node& node, const YAML::Node
     }
     r.spec["convert"] = std::move(convert);
     read_scenarios(rd, node, defaults, r);
+    // Not in the spec: how long a route may run does not change its outputs.
+    if (const YAML::Node t = pick(node, defaults, "timeout")) {
+        const double s = yaml::number(rd.file, t, "timeout");
+        yaml::require(rd.file, t, s >= 0.0 && s <= 1e7, "timeout must be 0 (no limit) to 1e7 seconds");
+        r.timeout_s = s;
+    }
     return r;
 }
 

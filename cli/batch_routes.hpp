@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct BatchRoute {
     std::vector<std::string> files;
     // The route as resolved: the stamp's `spec`, byte-stable for one file.
     nlohmann::ordered_json spec;
+    std::optional<double> timeout_s; // `timeout:` (seconds, 0: none); else --route-timeout
 };
 
 struct BatchFile {

@@ -166,7 +166,7 @@ bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, co
                                       : error_line(step.log);
         if (r.timed_out_after > 0.0) {
             char buf[96];
-            std::snprintf(buf, sizeof buf, "timed out: still running after %g s (--route-timeout), killed",
+            std::snprintf(buf, sizeof buf, "timed out: still running after %g s (--route-timeout or the route's timeout), killed",
                           r.timed_out_after);
             o.error = buf;
         }
@@ -184,13 +184,12 @@ bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, co
 namespace {
 
 // A task past its time is killed; wait4 then reaps it as failed.
-void kill_overdue(std::vector<Running>& running, double timeout_s) {
-    if (timeout_s <= 0.0) {
-        return;
-    }
+void kill_overdue(const std::vector<BatchTask>& tasks, std::vector<Running>& running) {
     const auto now = Clock::now();
     for (auto& r : running) {
-        if (r.timed_out_after == 0.0 && std::chrono::duration<double>(now - r.start).count() > timeout_s) {
+        const double timeout_s = tasks[r.task].timeout_s;
+        if (timeout_s > 0.0 && r.timed_out_after == 0.0 &&
+            std::chrono::duration<double>(now - r.start).count() > timeout_s) {
             ::kill(r.pid, SIGKILL);
             r.timed_out_after = timeout_s;
         }
@@ -200,7 +199,7 @@ void kill_overdue(std::vector<Running>& running, double timeout_s) {
 } // namespace
 
 void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
-               const std::function<void(std::size_t, const TaskOutcome&)>& on_done, double timeout_s) {
+               const std::function<void(std::size_t, const TaskOutcome&)>& on_done) {
     std::vector<Running> running;
     std::size_t next = 0;
     auto finish = [&](Running& r) {
@@ -221,7 +220,7 @@ void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress
             shown.emplace_back(tasks[r.task].id, tasks[r.task].steps[r.step].name);
         }
         progress.running(shown);
-        kill_overdue(running, timeout_s);
+        kill_overdue(tasks, running);
         int status = 0;
         rusage ru{};
         const pid_t pid = ::wait4(-1, &status, WNOHANG, &ru);

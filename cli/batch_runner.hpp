@@ -23,6 +23,7 @@ struct BatchStep {
 struct BatchTask {
     std::string id;
     std::vector<BatchStep> steps;   // the next starts only when the previous exited 0
+    double timeout_s = 0.0;         // killed when still running after this (0: no limit)
 };
 
 struct TaskOutcome {
@@ -58,10 +59,10 @@ private:
 };
 
 // Runs every task, at most `jobs` at once; on_done is called in the order the
-// tasks finish (index into `tasks`). A task still running timeout_s seconds
-// after it started (0: no limit) is killed (SIGKILL) and fails with
-// "timed out"; the others go on.
+// tasks finish (index into `tasks`). A task still running its timeout_s
+// after it started is killed (SIGKILL) and fails with "timed out"; the
+// others go on.
 void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
-               const std::function<void(std::size_t, const TaskOutcome&)>& on_done, double timeout_s = 0.0);
+               const std::function<void(std::size_t, const TaskOutcome&)>& on_done);
 
 } // namespace railodd::cli

@@ -3,6 +3,7 @@
 // densely, not from the formula), keeps every joint inside the range and
 // puts no station inside a line.
 #include "railodd/geometry/alignment.hpp"
+#include "railodd/geometry/indexed_alignment.hpp"
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,7 @@ TEST(GeometryChordStations, PolylineStaysWithinTheSagittaOfRandomAlignments) {
         const double s1 = u(rng) < 0.3 ? total : s0 + (total - s0) * u(rng);
         const double sagitta = u(rng) < 0.5 ? 0.05 : 0.005;
         const std::vector<double> st = chord_stations(a, s0, s1, sagitta);
+        EXPECT_EQ(IndexedAlignment(a).chord_stations(s0, s1, sagitta), st) << "round " << round;
         ASSERT_GE(st.size(), s1 > s0 ? 2u : 1u);
         EXPECT_EQ(st.front(), s0);
         EXPECT_EQ(st.back(), s1);

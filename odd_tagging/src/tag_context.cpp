@@ -195,7 +195,7 @@ void TagContext::tag(const std::string& path, std::size_t edge, double s0, doubl
         t.osm_ids = osm_ids;
         t.source = source;
         const std::vector<double> at = point ? std::vector<double>{s0}
-                                             : geometry::chord_stations(ia.alignment(), a, b, max_sagitta_m);
+                                             : ia.chord_stations(a, b, max_sagitta_m);
         // Exactly: grown by doubling, the network's sampled stretches (half a
         // million points on Cologne) held up to twice their size.
         t.lonlat.reserve(at.size());

@@ -29,6 +29,9 @@ public:
     // near a stretch (ordered points along a track), far cheaper than project().
     Projection project_within(double x, double y, double s_lo, double s_hi) const;
 
+    // Same as chord_stations(alignment(), ...), in O(log n + stations).
+    std::vector<double> chord_stations(double s0, double s1, double max_sagitta) const;
+
 private:
     struct Sample {
         double s;
