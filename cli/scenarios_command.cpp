@@ -139,7 +139,11 @@ CLI::App* ScenariosCommand::add(CLI::App& parent) {
     app->add_option("--max-anchors", opt_.max_anchors, "Anchors per template, spread along the route (0: all)")
         ->check(unsigned_integer)
         ->capture_default_str();
-    app->add_option("--osc-version", opt_.osc_version, "OpenSCENARIO version: 1.1, 1.2 or 1.3")->capture_default_str();
+    app->add_option("--osc-version", opt_.osc_version,
+                    "OpenSCENARIO version: 1.1, 1.2 (default) or 1.3; 1.0 under --target carla");
+    app->add_option("--target", opt_.target,
+                    "Player: esmini, or carla (ScenarioRunner: OpenSCENARIO 1.0, only what it supports)")
+        ->capture_default_str();
     app->add_flag("-q,--quiet", opt_.quiet, "Do not print the coverage table");
     return app;
 }
@@ -158,10 +162,23 @@ void ScenariosCommand::setup() {
                                         std::to_string(scenario::max_count_per_template) +
                                         " scenarios per template railodd generates");
     }
-    if (opt_.osc_version != "1.1" && opt_.osc_version != "1.2" && opt_.osc_version != "1.3") {
-        throw UsageError("--osc-version", "'" + opt_.osc_version + "' is not 1.1, 1.2 or 1.3");
+    try {
+        target_ = scenario::target_from(opt_.target);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--target", e.what());
     }
-    osc_minor_ = opt_.osc_version.back() - '0';
+    if (opt_.osc_version.empty()) {
+        osc_minor_ = scenario::default_revision(target_);
+    } else if (target_ == scenario::Target::carla && opt_.osc_version != "1.0") {
+        throw UsageError("--osc-version", "'" + opt_.osc_version +
+                                              "': --target carla writes OpenSCENARIO 1.0, the only version "
+                                              "ScenarioRunner reads");
+    } else if (target_ == scenario::Target::esmini && opt_.osc_version != "1.1" && opt_.osc_version != "1.2" &&
+               opt_.osc_version != "1.3") {
+        throw UsageError("--osc-version", "'" + opt_.osc_version + "' is not 1.1, 1.2 or 1.3 (1.0: --target carla)");
+    } else {
+        osc_minor_ = opt_.osc_version.back() - '0';
+    }
     if (!fs::is_directory(opt_.map_dir)) {
         throw InputError(opt_.map_dir, "not a folder (give the output folder of `railodd convert`)");
     }
@@ -179,6 +196,7 @@ int ScenariosCommand::run() {
     const odd::Taxonomy taxonomy = odd::load_taxonomy(taxonomy_file);
     const std::string catalog_file = or_default(opt_.catalog, "scenario/assets.yaml");
     const scenario::Catalog catalog = scenario::load_catalog(catalog_file, taxonomy);
+    scenario::check_catalog_for(catalog, target_);
     const std::string templates_file = or_default(opt_.templates, "scenario/templates.yaml");
     const scenario::TemplateSet templates = scenario::load_templates(templates_file, taxonomy, catalog);
     std::optional<odd::OddSpec> spec;
@@ -196,6 +214,7 @@ int ScenariosCommand::run() {
     gen.max_anchors = opt_.max_anchors;
     gen.map_file = fs::absolute(xodr).lexically_normal().lexically_relative(out).generic_string();
     gen.date = date;
+    gen.target = target_;
     const scenario::Generation generation = scenario::generate(profile, templates, catalog, taxonomy, gen);
 
     // Coverage of the route's ODD (and the declared one)
@@ -204,7 +223,7 @@ int ScenariosCommand::run() {
 
     // Write everything, then move it into place
     scenario::OutputInfo info{map_dir.string(), gen.map_file, taxonomy_file, catalog_file, templates_file,
-                              opt_.odd_spec, gen.strategy, opt_.count, opt_.seed, osc_minor_, date};
+                              opt_.odd_spec, gen.strategy, opt_.count, opt_.seed, osc_minor_, date, target_};
     scenario::write_scenario_set(stage, generation, coverage, profile, info);
     for (const auto& name : earlier_files(old_manifest(out / "manifest.json"))) {
         stage.remove_on_commit(name); // unless written again

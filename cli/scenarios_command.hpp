@@ -5,6 +5,8 @@
 // Exit codes: 0 written, 1 usage, 2 unreadable or invalid input, 3 output.
 #include "command.hpp"
 
+#include "railodd/scenario/target.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -22,7 +24,8 @@ struct ScenariosOptions {
     std::size_t count = 0;
     std::uint64_t seed = 1;
     std::size_t max_anchors = 0;
-    std::string osc_version = "1.2";
+    std::string osc_version;      // empty: the target's (1.2 for esmini, 1.0 for carla)
+    std::string target = "esmini"; // esmini or carla (ScenarioRunner)
     bool quiet = false;
 };
 
@@ -35,6 +38,7 @@ public:
 private:
     ScenariosOptions opt_;
     int osc_minor_ = 2;
+    scenario::Target target_ = scenario::Target::esmini;
 };
 
 } // namespace railodd::cli

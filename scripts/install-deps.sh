@@ -15,6 +15,7 @@ packages=(
   chromium
   slurmd slurmctld slurm-client munge
   clang libclang-rt-14-dev
+  libboost-dev libmsgpack-cxx-dev  # CARLA's OpenDRIVE loader, ../shared/tools/carla-road (tests)
 )
 # Node.js for the report's web libraries (npm) and its browser test; a newer
 # node already on the machine is kept.

@@ -20,20 +20,6 @@ Alignment arc(double x, double y, double r, double length) {
     return a;
 }
 
-// The same alignment driven the other way.
-Alignment reversed(const Alignment& a) {
-    Alignment b;
-    const Pose end = evaluate(a, length(a));
-    b.start = {end.x, end.y, end.hdg + std::numbers::pi, 0.0};
-    for (auto it = a.primitives.rbegin(); it != a.primitives.rend(); ++it) {
-        Primitive p = *it;
-        p.curv_start = -it->curv_end;
-        p.curv_end = -it->curv_start;
-        b.primitives.push_back(p);
-    }
-    return b;
-}
-
 } // namespace
 
 TEST(DesignSummary, SharesElementsAndSignChangesOfAKnownAlignment) {

@@ -12,7 +12,7 @@ TEST(IngestProjection, OriginMapsToZeroAndStringIsLocalTmerc) {
     EXPECT_DOUBLE_EQ(proj.origin().lon, 10.123457);
     EXPECT_DOUBLE_EQ(proj.origin().lat, 48.765432);
     EXPECT_EQ(proj.proj_string(),
-              "+proj=tmerc +lat_0=48.765432 +lon_0=10.123457 +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m +no_defs");
+              "+proj=tmerc +lat_0=48.765432 +lon_0=10.123457 +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m");
     const auto xy = proj.forward(proj.origin());
     EXPECT_NEAR(xy.x, 0.0, 1e-9);
     EXPECT_NEAR(xy.y, 0.0, 1e-9);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 
 #include <unistd.h> // getpid: one folder per test process (CTest runs tests in parallel; a folder has one writer)
 
@@ -142,14 +143,53 @@ TEST(XodrRailNetwork, SwitchesBecomeJunctionsWithContinuousConnections) {
             }
             ++connections;
             EXPECT_EQ(cr.junction, j.id);
+            EXPECT_EQ(c.contact, xodr::Contact::start) << "the incoming road is the one at the connecting road's start";
             // The incoming road's end that points at this junction.
             const bool at_start = in.predecessor.type == xodr::ElementType::junction && in.predecessor.id == j.id;
             expect_g2(end_pose(in, at_start ? xodr::Contact::start : xodr::Contact::end), end_pose(cr, c.contact),
                       "junction " + j.id + " connection " + c.id);
         }
     }
-    // Per switch: stem into both legs, and each leg back to the stem.
-    EXPECT_EQ(connections, 12u);
+    // Per switch: one connecting road per leg a train can take from the
+    // stem, each named by one connection (readers add the way back).
+    EXPECT_EQ(connections, 6u);
+}
+
+// What CARLA's loader needs to walk the map: it takes a link's element for a
+// road whenever a road has that id, and follows lane ids (a right lane runs
+// along s), never contactPoint, so every link must run end -> start.
+TEST(XodrRailNetwork, OneIdSpaceAndEveryLinkRunsEndToStart) {
+    const Fixture& f = fixture();
+    std::set<std::string> road_ids;
+    for (const auto& r : f.build.map.roads) {
+        road_ids.insert(r.id);
+    }
+    std::map<std::string, int> named; // connecting road -> connections naming it
+    for (const auto& j : f.build.map.junctions) {
+        EXPECT_EQ(road_ids.count(j.id), 0u) << "junction " << j.id << " has a road's id";
+        for (const auto& c : j.connections) {
+            ++named[c.connecting_road];
+        }
+    }
+    for (const auto& [id, n] : named) {
+        EXPECT_EQ(n, 1) << "connecting road " << id;
+    }
+    std::size_t links = 0;
+    for (const auto& r : f.build.map.roads) {
+        if (!r.rail) {
+            continue;
+        }
+        if (r.successor.type == xodr::ElementType::road) {
+            EXPECT_EQ(r.successor.contact, xodr::Contact::start) << "road " << r.id;
+            ++links;
+        }
+        if (r.predecessor.type == xodr::ElementType::road) {
+            EXPECT_EQ(r.predecessor.contact, xodr::Contact::end) << "road " << r.id;
+            ++links;
+        }
+    }
+    EXPECT_GT(links, 6u);
+    EXPECT_EQ(f.fitted.reversing_links, 0u);
 }
 
 TEST(XodrRailNetwork, RoadLinksAreContinuous) {

@@ -3,6 +3,8 @@
 #include "railodd/geometry/indexed_alignment.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace railodd::geometry {
 
@@ -63,6 +65,21 @@ Pose evaluate(const Alignment& alignment, double s) {
         pose = evaluate(pose, p, p.length);
         at += p.length;
     }
+}
+
+Alignment reversed(const Alignment& alignment) {
+    Alignment r;
+    r.start = evaluate(alignment, length(alignment));
+    r.start.hdg = std::remainder(r.start.hdg + std::numbers::pi, 2.0 * std::numbers::pi);
+    r.primitives.reserve(alignment.primitives.size());
+    for (auto it = alignment.primitives.rbegin(); it != alignment.primitives.rend(); ++it) {
+        Primitive p = *it;
+        p.curv_start = -it->curv_end;
+        p.curv_end = -it->curv_start;
+        r.primitives.push_back(p);
+    }
+    r.start.curvature = r.primitives.empty() ? 0.0 : r.primitives.front().curv_start;
+    return r;
 }
 
 Projection project_point(const Alignment& alignment, double x, double y) {

@@ -108,6 +108,8 @@ ordered_json links_entry(const FittedNetwork& net) {
             {"degenerate_chains", net.degenerate_chains},
             {"corner_chains", net.corner_chains.size()},
             {"spliced_ends", net.spliced_ends},
+            {"reversed_chains", net.reversed_chains},
+            {"reversing_links", net.reversing_links},
             {"max_gap_m", gap},
             {"max_heading_jump_rad", hdg},
             {"max_curvature_jump", curv}};

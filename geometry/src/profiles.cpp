@@ -1,5 +1,7 @@
 #include "railodd/geometry/profiles.hpp"
 
+#include "profile_ties.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -84,6 +86,7 @@ std::vector<VerticalProfile> fit_profiles(const TrackGraph& graph, const FittedN
         in.osm_ele = osm_ele_at(e, ia, in.s);
         out.push_back(fit_vertical_profile(in, dem, ProfileOptions{}));
     }
+    tie_profiles(graph, net, out);
     return out;
 }
 

@@ -2,6 +2,8 @@
 // that leave them, so every branch can start with the exact pose of its switch.
 #include "railodd/geometry/indexed_alignment.hpp"
 #include "railodd/geometry/track_fit.hpp"
+
+#include "chain_orientation.hpp"
 #include "chain_fit.hpp"
 #include "parallel_chains.hpp"
 #include "tie_splice.hpp"
@@ -116,7 +118,11 @@ public:
             degenerate_ += chain_degenerate_[c];
         }
         tie_cycles();
-        return collect();
+        FittedNetwork net = collect();
+        const Orientation o = orient_chains(g_, net);
+        net.reversed_chains = o.reversed_chains;
+        net.reversing_links = o.reversing_links;
+        return net;
     }
 
 private:

@@ -143,6 +143,8 @@ const char* to_string(ElevationSource source) {
         return "dem";
     case ElevationSource::osm_ele:
         return "osm_ele";
+    case ElevationSource::interpolated:
+        return "interpolated";
     case ElevationSource::flat:
         return "flat";
     }

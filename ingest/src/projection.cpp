@@ -16,7 +16,7 @@ double round6(double v) { return std::round(v * 1e6) / 1e6; }
 std::string tmerc_string(LonLat o) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "+proj=tmerc +lat_0=%.6f +lon_0=%.6f +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m +no_defs",
+                  "+proj=tmerc +lat_0=%.6f +lon_0=%.6f +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m",
                   o.lat, o.lon);
     return buf;
 }

@@ -50,6 +50,9 @@ std::vector<SwitchAt> switches_of(TagContext& ctx) {
             road_to_edge[p.road] = {e, p.s0};
         }
     }
+    for (const auto& [e, p] : ctx.map().rail.copies) {
+        road_to_edge[p.road] = {e, p.s0};
+    }
     std::map<std::string, std::size_t> road_index;
     for (std::size_t i = 0; i < ctx.map().map.roads.size(); ++i) {
         road_index[ctx.map().map.roads[i].id] = i;

@@ -192,9 +192,11 @@ void tag_vertical_and_cant(TagContext& ctx) {
     const auto& profiles = ctx.geo().profiles;
     const auto& cants = ctx.geo().cants;
     for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
-        // Without elevation data the profile is flat by assumption, not a
-        // measured level track: no gradient is claimed (report.json says so).
-        if (e < profiles.size() && profiles[e].source != geometry::ElevationSource::flat) {
+        // Without elevation data on the track the profile is an assumption
+        // (flat) or a guess between its neighbours (interpolated), not a
+        // measured gradient: none is claimed (report.json says which).
+        const auto src = e < profiles.size() ? profiles[e].source : geometry::ElevationSource::flat;
+        if (src == geometry::ElevationSource::dem || src == geometry::ElevationSource::osm_ele) {
             tag_gradients(ctx, e, profiles[e]);
             tag_vertical_curves(ctx, e, profiles[e]);
         }

@@ -201,13 +201,13 @@ Catalog load_catalog(const std::filesystem::path& path, const odd::Taxonomy& tax
     return catalog;
 }
 
-Actor actor_from(const Asset& asset, const std::string& name) {
+Actor actor_from(const Asset& asset, const std::string& name, const std::string& entry) {
     Actor a;
     a.name = name;
     a.kind = asset.kind;
     a.category = asset.osc_category;
     a.asset_id = asset.id;
-    a.catalog_entry = asset.osc_entry;
+    a.catalog_entry = entry;
     a.model3d = asset.carla_blueprint;
     a.mass_kg = asset.mass_kg;
     a.dimensions = asset.dimensions;

@@ -37,13 +37,14 @@ std::pair<std::string, std::string> map_value(const TemplateContext& ctx, const 
     return {std::get<std::string>(*v), std::get<std::string>(*v)};
 }
 
-void declare(ConcreteScenario& sc, const char* name, const std::string& type, const std::string& value) {
+void declare(ConcreteScenario& sc, const char* name, const std::string& type, const std::string& value,
+             ParameterRole role = ParameterRole::storyboard) {
     for (const auto& p : sc.parameters) {
         if (p.name == name) {
             return;
         }
     }
-    sc.parameters.push_back({name, type, value});
+    sc.parameters.push_back({name, type, value, role});
 }
 
 std::string fixed(double v) {
@@ -100,7 +101,7 @@ std::string camel(const std::string& name) {
 // ODD values the scenario exercises.
 void apply_mode(const TemplateContext& ctx, const DegradedMode& m, ScenarioRecord& rec) {
     ConcreteScenario& sc = rec.scenario;
-    declare(sc, "DegradedMode", "string", m.id);
+    declare(sc, "DegradedMode", "string", m.id, ParameterRole::degraded_mode);
     sc.conditions.emplace_back("degraded_mode", m.id);
     sc.conditions.emplace_back("degraded_mode_family", m.family);
     for (const auto& set : m.sets) {
@@ -116,7 +117,8 @@ void apply_mode(const TemplateContext& ctx, const DegradedMode& m, ScenarioRecor
             const std::string leaf = set.element.substr(set.element.rfind('/') + 1);
             const bool says_it = leaf.size() >= set.attribute.size() &&
                                  leaf.compare(leaf.size() - set.attribute.size(), set.attribute.size(), set.attribute) == 0;
-            declare(sc, camel(says_it ? leaf : leaf + " " + set.attribute).c_str(), "string", set.value);
+            declare(sc, camel(says_it ? leaf : leaf + " " + set.attribute).c_str(), "string", set.value,
+                    ParameterRole::mode_setting);
             sc.conditions.emplace_back(set.element + " " + set.attribute, set.value);
         }
         rec.odd_elements.push_back({set.element, "", "", "", "degraded_mode"});
@@ -144,7 +146,7 @@ void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed&
             const Asset& asset = *ctx.catalog.find(raw);
             rec.values.emplace_back(p.name, asset.name);
             rec.raw.emplace_back(p.name, asset.id);
-            declare(sc, (p.actor + "Asset").c_str(), "string", asset.osc_entry);
+            declare(sc, (p.actor + "Asset").c_str(), "string", entry_name(asset, ctx.options.target));
             break;
         }
         case ParameterKind::map_value: {
@@ -170,7 +172,7 @@ void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed&
         case ParameterKind::choice:
             rec.values.emplace_back(p.name, raw);
             rec.raw.emplace_back(p.name, raw);
-            declare(sc, camel(p.name).c_str(), "string", raw);
+            declare(sc, camel(p.name).c_str(), "string", raw, ParameterRole::choice);
             sc.conditions.emplace_back(p.name, raw);
             break;
         case ParameterKind::degraded_mode: {

@@ -281,7 +281,7 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
     }
     for (const auto& a : catalog.assets) {
         if (used_assets.contains(a.id)) {
-            out.catalog_entries.push_back(actor_from(a, a.id));
+            out.catalog_entries.push_back(actor_from(a, a.id, entry_name(a, options.target)));
         }
     }
     return out;

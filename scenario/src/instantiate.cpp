@@ -5,6 +5,7 @@
 
 #include "attribute_values.hpp"
 #include "environment.hpp"
+#include "target_support.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -165,7 +166,7 @@ std::optional<std::vector<LanePlacement>> crossing_road_path(const TemplateConte
 }
 
 Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asset& asset, const Anchor& a, double side) {
-    Actor actor = actor_from(asset, t.name);
+    Actor actor = actor_from(asset, t.name, entry_name(asset, ctx.options.target));
     actor.place = to_string(t.place);
     const auto at = ctx.lines.at(a.line, std::clamp(a.chainage + t.along_m, a.start_chainage, a.end_chainage));
     actor.start = at.value_or(a.place);
@@ -234,6 +235,22 @@ MoveStart move_start(const ActorTemplate& t, const Actor& actor, const Anchor& a
         return {at, 0.0};
     }
     return {0.0, -at / std::max(ego.speed_mps, 0.1)};
+}
+
+// The ego's run sampled every 10 m of chainage and at its end. 10 m keeps a
+// straight chord within 0.1 m of a 150 m curve and spans several of a
+// player's steps even at 300 km/h; chainages outside the line are left out.
+std::vector<TrackSample> track_samples(const LineIndex& lines, std::size_t line, double c0, double c1) {
+    constexpr double step_m = 10.0;
+    std::vector<TrackSample> out;
+    const auto n = static_cast<std::size_t>(std::max(0.0, std::ceil((c1 - c0) / step_m)));
+    for (std::size_t i = 0; i <= n; ++i) {
+        const double c = std::min(c0 + static_cast<double>(i) * step_m, c1);
+        if (auto p = lines.at(line, c)) {
+            out.push_back({c - c0, *p});
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -333,9 +350,13 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
     rec.speed_basis = speed.basis;
     const Asset* fast_enough = ego_for(ctx, row, speed.kmh);
     const Asset& ego_asset = fast_enough ? *fast_enough : asset_for(ctx, row, "Ego");
-    sc.ego = actor_from(ego_asset, "Ego");
+    sc.ego = actor_from(ego_asset, "Ego", entry_name(ego_asset, ctx.options.target));
     sc.ego.start = ctx.lines.at(a.line, a.start_chainage).value_or(a.place);
     sc.ego.route = ctx.lines.waypoints(a.line, a.start_chainage, a.end_chainage);
+    if (!target_support::usable(ctx.options.target, "AssignRouteAction", target_support::Where::init) &&
+        !target_support::usable(ctx.options.target, "AssignRouteAction", target_support::Where::story)) {
+        sc.ego_track = track_samples(ctx.lines, a.line, a.start_chainage, a.end_chainage);
+    }
     sc.ego.speed_mps = speed.kmh / 3.6;
     sc.ego_end = ctx.lines.at(a.line, a.end_chainage);
     sc.stop_time_s = std::ceil((a.end_chainage - a.start_chainage) / std::max(sc.ego.speed_mps, 1.0)) + 30.0;

@@ -134,9 +134,18 @@ ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile, c
             {"map", info.map_file}};
 }
 
+ojson degraded_json(const std::vector<Degradation>& list) {
+    ojson out = ojson::array();
+    for (const auto& d : list) {
+        out.push_back({{"name", d.name}, {"value", d.value}, {"reason", d.reason}});
+    }
+    return out;
+}
+
 } // namespace
 
-ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const OutputInfo& info) {
+ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const OutputInfo& info,
+                    const Degradations& degraded) {
     ojson j;
     j["railodd"] = {{"format", "scenario_manifest"}, {"format_version", 1}};
     j["inputs"] = {{"map_dir", info.map_dir},     {"map", info.map_file},
@@ -144,11 +153,14 @@ ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const O
                    {"templates", info.templates_file}, {"odd_spec", info.spec_file},
                    {"route", profile.route}};
     j["generation"] = {{"strategy", to_string(info.strategy)}, {"count", info.count}, {"seed", info.seed},
-                       {"openscenario", "1." + std::to_string(info.osc_minor)}};
+                       {"openscenario", "1." + std::to_string(info.osc_minor)}, {"target", to_string(info.target)}};
     ojson templates = ojson::array();
     for (const auto& r : g.runs) {
         templates.push_back({{"id", r.template_id}, {"anchors", r.anchors}, {"anchors_skipped", r.skipped.size()},
-                             {"scenarios", r.rows}, {"distribution", "distributions/" + r.template_id + ".xosc"}});
+                             {"scenarios", r.rows},
+                             {"distribution", has_distributions(info)
+                                                  ? ojson("distributions/" + r.template_id + ".xosc")
+                                                  : ojson(nullptr)}});
         if (r.every_valid_row) {
             // --count asked for more than exist: the reader sees why there are fewer.
             templates.back()["all_valid_rows"] = true;
@@ -158,6 +170,11 @@ ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const O
     ojson scenarios = ojson::array();
     for (const auto& s : g.scenarios) {
         scenarios.push_back(scenario_json(s, profile, info));
+        if (info.target != Target::esmini) {
+            const auto it = degraded.find(s.scenario.id);
+            scenarios.back()["degraded_for_target"] =
+                degraded_json(it == degraded.end() ? std::vector<Degradation>{} : it->second);
+        }
     }
     j["scenarios"] = std::move(scenarios);
     return j;

@@ -30,11 +30,16 @@ std::map<std::string, std::vector<ValueSet>> value_sets(const Generation& g) {
 
 } // namespace
 
+bool has_distributions(const OutputInfo& info) { return info.osc_minor >= 1; }
+
 void write_scenario_set(OutputStage& stage, const Generation& g, const Coverage& coverage,
                         const odd::OddProfile& profile, const OutputInfo& info) {
-    const WriteOptions opt{info.osc_minor};
+    const WriteOptions opt{info.osc_minor, info.target};
+    Degradations degraded;
     for (const auto& s : g.scenarios) {
-        stage.write_text(s.scenario.id + ".xosc", xosc_text(s.scenario, opt));
+        XoscDocument doc = xosc_document(s.scenario, opt);
+        stage.write_text(s.scenario.id + ".xosc", doc.text);
+        degraded[s.scenario.id] = std::move(doc.degraded_for_target);
         stage.write_text(s.scenario.id + ".behavior.yaml", behavior_yaml(s, profile, info));
     }
     for (const auto kind : {Actor::Kind::vehicle, Actor::Kind::pedestrian, Actor::Kind::misc_object}) {
@@ -52,7 +57,7 @@ void write_scenario_set(OutputStage& stage, const Generation& g, const Coverage&
     const auto sets = value_sets(g);
     for (const auto& r : g.runs) {
         const auto it = sets.find(r.template_id);
-        if (it == sets.end()) {
+        if (it == sets.end() || !has_distributions(info)) {
             continue; // no scenario: nothing to distribute over
         }
         std::string first;
@@ -68,7 +73,7 @@ void write_scenario_set(OutputStage& stage, const Generation& g, const Coverage&
                                                ")",
                                            info.date, opt));
     }
-    stage.write_text("manifest.json", manifest_json(g, profile, info).dump(1) + "\n");
+    stage.write_text("manifest.json", manifest_json(g, profile, info, degraded).dump(1) + "\n");
     stage.write_text("coverage.json", coverage_json(coverage).dump(1) + "\n");
     stage.write_text("coverage.txt", coverage_table(coverage));
 }

@@ -2,6 +2,9 @@
 // scenario's CatalogReferences name. Each entry carries the physical data of
 // its asset and, in <Properties>, the actor's properties (ODD attributes,
 // behaviour file) plus "carla_blueprint" = model3d for the CARLA adapter.
+// Under the carla target the entries are OpenSCENARIO 1.0 as ScenarioRunner
+// reads them: named by their blueprints (target.hpp entry_name), a
+// Pedestrian's model the blueprint, vehicles typed by a parameter.
 #include "railodd/scenario/xosc_writer.hpp"
 
 #include "xosc_support.hpp"
@@ -62,7 +65,21 @@ void bounding_box(pugi::xml_node parent, const Dimensions& d) {
     attr(dim, "height", d.height);
 }
 
-void properties(pugi::xml_node parent, const Actor& a) {
+// Under a target that tells the ego by a Property (Profile::ego_type_property)
+// a vehicle's "type" is the entry parameter ActorType, "scenario" unless the
+// ego's CatalogReference assigns "ego_vehicle" (xosc_writer.cpp): one entry
+// serves a train as the ego and as a stabled train.
+void actor_type(pugi::xml_node vehicle, pugi::xml_node props) {
+    pugi::xml_node d = vehicle.append_child("ParameterDeclarations").append_child("ParameterDeclaration");
+    attr(d, "name", xosc::actor_type_parameter);
+    attr(d, "parameterType", "string");
+    attr(d, "value", "scenario");
+    pugi::xml_node p = props.append_child("Property");
+    attr(p, "name", "type");
+    attr(p, "value", std::string{"$"} + xosc::actor_type_parameter);
+}
+
+pugi::xml_node properties(pugi::xml_node parent, const Actor& a) {
     pugi::xml_node props = parent.append_child("Properties");
     bool has_blueprint = false;
     for (const auto& [name, value] : a.properties) {
@@ -76,20 +93,27 @@ void properties(pugi::xml_node parent, const Actor& a) {
         attr(p, "name", "carla_blueprint");
         attr(p, "value", a.model3d);
     }
+    return props;
 }
 
-void common_attributes(pugi::xml_node n, const Actor& a, const char* category_attribute) {
+// OpenSCENARIO 1.0 has no model3d, and a Vehicle no mass; its Pedestrian
+// requires `model` (ScenarioRunner spawns that blueprint).
+void common_attributes(pugi::xml_node n, const Actor& a, const char* category_attribute, const WriteOptions& opt) {
     attr(n, "name", a.catalog_entry);
     attr(n, category_attribute, a.category);
-    attr(n, "mass", a.mass_kg);
-    if (!a.model3d.empty()) {
+    if (opt.rev_minor >= 1 || a.kind != Actor::Kind::vehicle) {
+        attr(n, "mass", a.mass_kg);
+    }
+    if (opt.rev_minor < 1 && a.kind == Actor::Kind::pedestrian) {
+        attr(n, "model", a.model3d.empty() ? a.catalog_entry : a.model3d);
+    } else if (opt.rev_minor >= 1 && !a.model3d.empty()) {
         attr(n, "model3d", a.model3d);
     }
 }
 
-void vehicle(pugi::xml_node catalog, const Actor& a) {
+void vehicle(pugi::xml_node catalog, const Actor& a, const WriteOptions& opt) {
     pugi::xml_node v = catalog.append_child("Vehicle");
-    common_attributes(v, a, "vehicleCategory");
+    common_attributes(v, a, "vehicleCategory", opt);
     bounding_box(v, a.dimensions);
     pugi::xml_node perf = v.append_child("Performance");
     attr(perf, "maxSpeed", a.max_speed_mps);
@@ -101,26 +125,29 @@ void vehicle(pugi::xml_node catalog, const Actor& a) {
     pugi::xml_node axles = v.append_child("Axles");
     axle(axles.append_child("FrontAxle"), shape, x, a.dimensions.width, true);
     axle(axles.append_child("RearAxle"), shape, -x, a.dimensions.width, false);
-    properties(v, a);
+    pugi::xml_node props = properties(v, a);
+    if (target_support::profile(opt.target).ego_type_property) {
+        actor_type(v, props);
+    }
 }
 
 } // namespace
 
-void xosc::write_catalog_entry(pugi::xml_node catalog, const Actor& a) {
+void xosc::write_catalog_entry(pugi::xml_node catalog, const Actor& a, const WriteOptions& opt) {
     switch (a.kind) {
     case Actor::Kind::vehicle:
-        vehicle(catalog, a);
+        vehicle(catalog, a, opt);
         return;
     case Actor::Kind::pedestrian: {
         pugi::xml_node p = catalog.append_child("Pedestrian");
-        common_attributes(p, a, "pedestrianCategory");
+        common_attributes(p, a, "pedestrianCategory", opt);
         bounding_box(p, a.dimensions);
         properties(p, a);
         return;
     }
     case Actor::Kind::misc_object: {
         pugi::xml_node m = catalog.append_child("MiscObject");
-        common_attributes(m, a, "miscObjectCategory");
+        common_attributes(m, a, "miscObjectCategory", opt);
         bounding_box(m, a.dimensions);
         properties(m, a);
         return;
@@ -139,10 +166,11 @@ std::string catalog_text(const std::string& catalog_name, const std::vector<Acto
     for (const auto kind : {Actor::Kind::vehicle, Actor::Kind::pedestrian, Actor::Kind::misc_object}) {
         for (const auto& a : entries) {
             if (a.kind == kind && written.insert(a.catalog_entry).second) {
-                xosc::write_catalog_entry(catalog, a);
+                xosc::write_catalog_entry(catalog, a, opt);
             }
         }
     }
+    target_support::check_document(root, opt.target);
     return xosc::to_text(doc);
 }
 

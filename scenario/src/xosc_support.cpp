@@ -37,12 +37,7 @@ std::string num(double v) {
     return s;
 }
 
-void check_revision(const WriteOptions& opt) {
-    if (opt.rev_minor < 1 || opt.rev_minor > 3) {
-        throw UsageError("OpenSCENARIO 1." + std::to_string(opt.rev_minor),
-                         "unsupported revision: the writer supports 1.1, 1.2 and 1.3");
-    }
-}
+void check_revision(const WriteOptions& opt) { check_revision_for(opt.target, opt.rev_minor); }
 
 pugi::xml_node begin_document(pugi::xml_document& doc, const WriteOptions& opt, const std::string& date,
                               const std::string& description, const std::string& author) {
@@ -100,13 +95,84 @@ bool Context::declared(std::string_view name) const {
                        [&](const Parameter& p) { return p.name == name; });
 }
 
-std::string Context::value(std::string_view name, const std::string& literal) const {
+std::string Context::value(std::string_view element, std::string_view name, const std::string& literal) const {
     if (!declared(name)) {
         return literal;
+    }
+    expressed_.emplace(name);
+    if (!target_support::resolves_parameters(opt_.target, element)) {
+        return literal; // the declaration's value, as the generator wrote both
     }
     std::string ref{"$"};
     ref += name;
     return ref;
+}
+
+bool Context::usable(std::string_view element, target_support::Where where) const {
+    return target_support::usable(opt_.target, element, where);
+}
+
+void Context::drop(const std::string& name, const std::string& type, const std::string& value,
+                   const std::string& reason) const {
+    if (std::any_of(dropped_.begin(), dropped_.end(), [&](const Degradation& d) { return d.name == name; })) {
+        return;
+    }
+    const auto it = std::find_if(sc_.parameters.begin(), sc_.parameters.end(),
+                                 [&](const Parameter& p) { return p.name == name; });
+    if (it == sc_.parameters.end()) {
+        added_.push_back({name, type, value});
+    }
+    dropped_.push_back({name, it == sc_.parameters.end() ? value : it->value, reason});
+}
+
+namespace {
+
+// Why a declared parameter that the document does not express stays one.
+std::string unexpressed_reason(const Parameter& p) {
+    switch (p.role) {
+    case ParameterRole::choice:
+        return "a template choice no OpenSCENARIO 1.0 action carries (a rail signal's aspect: ScenarioRunner's "
+               "TrafficSignalStateAction sets CARLA traffic lights only, and CARLA makes none of a rail signal); "
+               "for a controller: the behaviour file's conditions";
+    case ParameterRole::degraded_mode:
+        return "the degraded mode's id: OpenSCENARIO 1.0 has no degraded modes; of its settings, weather and "
+               "rail head are in the Environment, the others are listed beside it";
+    case ParameterRole::mode_setting:
+        return "a degraded mode's setting no OpenSCENARIO action carries (GNSS, train radio, the sensor's lens, "
+               "snow on the track, ...); for a sensor or controller model: the behaviour file's conditions";
+    case ParameterRole::storyboard:
+        break;
+    }
+    return "declared, but no element the target reads carries it";
+}
+
+} // namespace
+
+std::vector<Degradation> Context::degraded() const {
+    std::vector<Degradation> out;
+    if (opt_.target == Target::esmini) {
+        return out;
+    }
+    auto dropped = [this](const std::string& name) {
+        return std::find_if(dropped_.begin(), dropped_.end(), [&](const Degradation& d) { return d.name == name; });
+    };
+    // A mode of family none ("all systems nominal") degrades nothing: its id is no loss.
+    const bool nominal = std::any_of(sc_.conditions.begin(), sc_.conditions.end(), [](const auto& c) {
+        return c.first == "degraded_mode_family" && c.second == "none";
+    });
+    for (const auto& p : sc_.parameters) {
+        if (const auto d = dropped(p.name); d != dropped_.end()) {
+            out.push_back(*d);
+        } else if (p.role == ParameterRole::degraded_mode && nominal) {
+            continue;
+        } else if (p.role != ParameterRole::storyboard || !expressed_.contains(p.name)) {
+            out.push_back({p.name, p.value, unexpressed_reason(p)});
+        }
+    }
+    for (const auto& p : added_) {
+        out.push_back(*dropped(p.name));
+    }
+    return out;
 }
 
 void lane_position(pugi::xml_node parent, const LanePlacement& p, bool orientation) {

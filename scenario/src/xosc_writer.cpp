@@ -1,9 +1,12 @@
 // The scenario document (ID.xosc) and the ParameterValueDistribution document.
 // The storyboard is written by xosc_storyboard.cpp, the environment by
-// xosc_environment.cpp, the catalogs by xosc_catalog.cpp.
+// xosc_environment.cpp, the catalogs by xosc_catalog.cpp; what each target
+// reads is in target_support.cpp.
 #include "railodd/scenario/xosc_writer.hpp"
 
 #include "xosc_support.hpp"
+
+#include "railodd/util/errors.hpp"
 
 #include <algorithm>
 
@@ -33,22 +36,34 @@ std::string parameter_type(const std::string& type, int rev_minor) {
     return type;
 }
 
-void write_parameters(pugi::xml_node root, const ConcreteScenario& sc, int rev_minor) {
-    pugi::xml_node decls = root.append_child("ParameterDeclarations");
-    for (const auto& p : sc.parameters) {
+// Filled after the storyboard (the node stays first in the document): the
+// writer may add declarations for values the target made it drop.
+void write_parameters(pugi::xml_node decls, const ConcreteScenario& sc, const xosc::Context& cx) {
+    auto declare = [&](const Parameter& p) {
         pugi::xml_node d = decls.append_child("ParameterDeclaration");
         attr(d, "name", p.name);
-        attr(d, "parameterType", parameter_type(p.type, rev_minor));
+        attr(d, "parameterType", parameter_type(p.type, cx.rev_minor()));
         attr(d, "value", p.value);
+    };
+    for (const auto& p : sc.parameters) {
+        declare(p);
+    }
+    for (const auto& p : cx.added()) {
+        declare(p);
     }
 }
 
-// All three locations point at the one catalog directory: the catalogs are
-// told apart by their name attribute, not by their folder.
-void write_catalog_locations(pugi::xml_node root, const ConcreteScenario& sc) {
+// Every location points at the one catalog directory: the catalogs are told
+// apart by their name attribute, not by their folder. All three, or only the
+// kinds the scenario uses where the target warns about a missing catalog.
+void write_catalog_locations(pugi::xml_node root, const ConcreteScenario& sc, const xosc::Context& cx) {
     pugi::xml_node locations = root.append_child("CatalogLocations");
-    for (const char* name : {"VehicleCatalog", "PedestrianCatalog", "MiscObjectCatalog"}) {
-        attr(locations.append_child(name).append_child("Directory"), "path", sc.catalog_dir);
+    for (const auto kind : {Actor::Kind::vehicle, Actor::Kind::pedestrian, Actor::Kind::misc_object}) {
+        const bool used = sc.ego.kind == kind || std::any_of(sc.others.begin(), sc.others.end(),
+                                                             [&](const Actor& a) { return a.kind == kind; });
+        if (used || cx.profile().all_catalog_locations) {
+            attr(locations.append_child(catalog_name(kind)).append_child("Directory"), "path", sc.catalog_dir);
+        }
     }
 }
 
@@ -57,17 +72,24 @@ void write_entity(pugi::xml_node entities, const Actor& a, bool is_ego, const xo
     attr(object, "name", a.name);
     pugi::xml_node ref = object.append_child("CatalogReference");
     attr(ref, "catalogName", catalog_name(a.kind));
-    attr(ref, "entryName", cx.value(xosc::asset_parameter(a, is_ego), a.catalog_entry));
+    attr(ref, "entryName", cx.value("CatalogReference", xosc::asset_parameter(a, is_ego), a.catalog_entry));
+    if (is_ego && cx.profile().ego_type_property) {
+        // The entry's Property type is $ActorType (xosc_catalog.cpp): the ego's
+        // reference makes it ego_vehicle, whatever else uses the same entry.
+        pugi::xml_node assign = ref.append_child("ParameterAssignments").append_child("ParameterAssignment");
+        attr(assign, "parameterRef", xosc::actor_type_parameter);
+        attr(assign, "value", "ego_vehicle");
+    }
 }
 
 } // namespace
 
-std::string xosc_text(const ConcreteScenario& sc, const WriteOptions& opt) {
+XoscDocument xosc_document(const ConcreteScenario& sc, const WriteOptions& opt) {
     pugi::xml_document doc;
     pugi::xml_node root = xosc::begin_document(doc, opt, sc.date, sc.description, sc.author);
     const xosc::Context cx{sc, opt};
-    write_parameters(root, sc, opt.rev_minor);
-    write_catalog_locations(root, sc);
+    pugi::xml_node decls = root.append_child("ParameterDeclarations");
+    write_catalog_locations(root, sc, cx);
     attr(root.append_child("RoadNetwork").append_child("LogicFile"), "filepath", sc.map_file);
 
     pugi::xml_node entities = root.append_child("Entities");
@@ -80,8 +102,12 @@ std::string xosc_text(const ConcreteScenario& sc, const WriteOptions& opt) {
     xosc::write_init(storyboard, cx);
     xosc::write_story(storyboard, cx);
     xosc::write_stop_trigger(storyboard, cx);
-    return xosc::to_text(doc);
+    write_parameters(decls, sc, cx);
+    target_support::check_document(root, opt.target);
+    return {xosc::to_text(doc), cx.degraded()};
 }
+
+std::string xosc_text(const ConcreteScenario& sc, const WriteOptions& opt) { return xosc_document(sc, opt).text; }
 
 void write_xosc(const ConcreteScenario& sc, const std::filesystem::path& file, const WriteOptions& opt) {
     xosc::write_atomically(file, xosc_text(sc, opt));
@@ -89,6 +115,10 @@ void write_xosc(const ConcreteScenario& sc, const std::filesystem::path& file, c
 
 std::string distribution_text(const std::string& scenario_file_rel, const std::vector<ValueSet>& value_sets,
                               const std::string& description, const std::string& date, const WriteOptions& opt) {
+    if (opt.rev_minor < 1) {
+        throw UsageError("OpenSCENARIO 1." + std::to_string(opt.rev_minor),
+                         "has no ParameterValueDistribution (added in 1.1)");
+    }
     pugi::xml_document doc;
     pugi::xml_node root = xosc::begin_document(doc, opt, date, description, "railodd");
     pugi::xml_node dist = root.append_child("ParameterValueDistribution");

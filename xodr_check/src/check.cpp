@@ -82,7 +82,11 @@ CheckResult check_text(const std::string& xml, const std::string& name, const Li
     check_plan_views(ctx);
     check_elevations(ctx);
     check_road_links(ctx);
+    check_contact_points(ctx);
+    check_elevation_links(ctx);
     check_junctions(ctx);
+    check_duplicate_connections(ctx);
+    check_id_collisions(ctx);
     check_rail_extensions(ctx);
     // Errors first so a truncated listing shows what failed; stable keeps the
     // document order within each severity.

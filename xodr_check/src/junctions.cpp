@@ -14,9 +14,9 @@ bool links_to(const Link& l, const std::string& junction_id) {
     return l.present && l.element_type == "junction" && l.element_id == junction_id;
 }
 
-// The end of the incoming road that links to the junction; when both do (a
-// loop), the one nearer the connecting road's contact.
-bool incoming_end(const Road& incoming, const Junction& j, const Pose& contact, bool& at_end) {
+} // namespace
+
+bool junction_end(const Road& incoming, const Junction& j, const Pose& contact, bool& at_end) {
     const bool start = links_to(incoming.predecessor, j.id);
     const bool end = links_to(incoming.successor, j.id);
     if (start && end && incoming.has_geometry) {
@@ -27,6 +27,8 @@ bool incoming_end(const Road& incoming, const Junction& j, const Pose& contact, 
     at_end = end;
     return start || end;
 }
+
+namespace {
 
 void check_lane_links(Context& ctx, const Junction& j, const Connection& con, RoadEnd incoming, RoadEnd connecting) {
     const LaneSection* from = incoming.road->section(incoming.at_end);
@@ -75,7 +77,7 @@ void check_connection(Context& ctx, const Junction& j, const Connection& con) {
     }
     const RoadEnd conn_end{connecting, con.contact == "end"};
     bool at_end = false;
-    if (!incoming_end(*incoming, j, connecting->pose(conn_end.at_end), at_end)) {
+    if (!junction_end(*incoming, j, connecting->pose(conn_end.at_end), at_end)) {
         ctx.error("junction", j.id, nan, "connection_incoming_link",
                   "connection " + con.id + ": incoming road " + incoming->id +
                       " links to junction " + j.id + " at neither end");

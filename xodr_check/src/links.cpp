@@ -8,14 +8,9 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace railodd::xodr_check {
-
-namespace {
-
-const char* end_name(bool at_end) { return at_end ? "end" : "start"; }
-
-} // namespace
 
 void compare_contact(Context& ctx, const std::string& object, const std::string& id, double s,
                      const std::string& prefix, RoadEnd a, RoadEnd b) {
@@ -98,6 +93,20 @@ void check_link(Context& ctx, const Road& road, const Link& link, bool at_end,
 }
 
 } // namespace
+
+std::vector<RoadLink> road_to_road_links(const Document& doc) {
+    std::vector<RoadLink> out;
+    for (const Road& road : doc.roads) {
+        for (const bool at_end : {false, true}) {
+            const Link& l = link_at(road, at_end);
+            const Road* other = l.present && l.element_type == "road" ? doc.road(l.element_id) : nullptr;
+            if (other && (l.contact == "start" || l.contact == "end")) {
+                out.push_back({&road, at_end, &l, other, l.contact == "end"});
+            }
+        }
+    }
+    return out;
+}
 
 void check_road_links(Context& ctx) {
     std::set<std::pair<EndKey, EndKey>> compared;

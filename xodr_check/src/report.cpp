@@ -24,7 +24,8 @@ std::string fmt(const char* format, double v) {
 }
 
 std::string worst_line(const char* label, const Worst& w, double limit, const char* unit) {
-    std::string line = std::string{"  "} + label + fmt("%.3g ", w.value) + unit + " (limit " + fmt("%g ", limit) + unit + ")";
+    const std::string u = *unit ? std::string{" "} + unit : std::string{}; // grades have no unit
+    std::string line = std::string{"  "} + label + fmt("%.3g", w.value) + u + " (limit " + fmt("%g", limit) + u + ")";
     if (!w.where.empty()) {
         line += " at " + w.where;
     }
@@ -80,6 +81,8 @@ nlohmann::ordered_json summary_json(const Summary& s, const Limits& l) {
     j["max_heading_jump_rad"] = worst_json(s.heading_jump_rad, l.heading_rad);
     j["max_rail_curvature_jump_per_m"] = worst_json(s.rail_curvature_jump, l.rail_curvature_per_m);
     j["max_elevation_gap_m"] = worst_json(s.elevation_gap_m, l.elevation_gap_m);
+    j["max_link_height_m"] = worst_json(s.link_height_m, l.link_height_m);
+    j["max_link_grade"] = worst_json(s.link_grade, l.link_grade);
     return j;
 }
 
@@ -116,6 +119,8 @@ std::string verdict_text(const Verdict& v, std::size_t max_findings) {
     o << worst_line("max heading jump:        ", s.heading_jump_rad, v.limits.heading_rad, "rad");
     o << worst_line("max rail curvature jump: ", s.rail_curvature_jump, v.limits.rail_curvature_per_m, "1/m");
     o << worst_line("max elevation gap:       ", s.elevation_gap_m, v.limits.elevation_gap_m, "m");
+    o << worst_line("max link height step:    ", s.link_height_m, v.limits.link_height_m, "m");
+    o << worst_line("max link grade change:   ", s.link_grade, v.limits.link_grade, "");
     o << "  checks: " << c.errors() << " error(s), " << c.warnings() << " warning(s)\n";
     if (v.schema) {
         schema_text(o, *v.schema);

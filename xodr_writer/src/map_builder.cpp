@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace railodd::xodr {
 
@@ -33,6 +35,32 @@ void set_bounds(Header& h, const MapInput& in) {
     h.west = w - margin;
 }
 
+// CARLA takes a link's element for a road whenever some road has its id (it
+// never reads elementType), so junctions are numbered after the last road:
+// one id space. Road ids, which the profile and scenarios cite, stay as
+// they were handed out.
+void number_junctions_after_roads(Map& map) {
+    long last = 0;
+    for (const Road& r : map.roads) {
+        last = std::max(last, std::stol(r.id));
+    }
+    std::map<std::string, std::string> renamed;
+    for (std::size_t i = 0; i < map.junctions.size(); ++i) {
+        Junction& j = map.junctions[i];
+        j.id = renamed[j.id] = std::to_string(last + 1 + static_cast<long>(i));
+    }
+    for (Road& r : map.roads) {
+        if (r.junction != "-1") {
+            r.junction = renamed.at(r.junction);
+        }
+        for (RoadLink* link : {&r.predecessor, &r.successor}) {
+            if (link->type == ElementType::junction) {
+                link->id = renamed.at(link->id);
+            }
+        }
+    }
+}
+
 } // namespace
 
 MapBuild build_map(const MapInput& in, const MapOptions& options) {
@@ -53,6 +81,7 @@ MapBuild build_map(const MapInput& in, const MapOptions& options) {
     add_track_features(ctx);
     add_stations(ctx);
     add_level_crossings(ctx);
+    number_junctions_after_roads(b.map);
     return b;
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace railodd::xodr {
 
@@ -157,7 +158,7 @@ private:
     }
 
     // Writes [s0, s1] of edge e's alignment as a road; returns its index.
-    std::size_t add_piece(std::size_t e, double s0, double s1, const std::string& junction) {
+    std::size_t add_piece(std::size_t e, double s0, double s1, const std::string& junction, bool piece = true) {
         const geometry::Alignment& a = in_.fitted.edges[e].alignment;
         const double len = geometry::length(a);
         std::vector<double> cuts;
@@ -191,7 +192,12 @@ private:
         r.user_data.push_back({"osm_edge_nodes", "node:" + std::to_string(ge.nodes.front().id) + ",node:" +
                                                       std::to_string(ge.nodes.back().id)});
         map_.roads.push_back(std::move(r));
-        net_.pieces[e].push_back({map_.roads.size() - 1, s0, s1});
+        const RoadPiece p{map_.roads.size() - 1, s0, s1};
+        if (piece) {
+            net_.pieces[e].push_back(p);
+        } else {
+            net_.copies.emplace_back(e, p);
+        }
         return map_.roads.size() - 1;
     }
 
@@ -228,6 +234,11 @@ private:
     std::map<std::size_t, std::size_t> switches_at_; // vertex -> switches written there
 };
 
+// One connecting road per movement, named by exactly one connection: CARLA
+// matches connections on the connecting road's own links and lists a road
+// once per connection naming it, and esmini adds the counter connection
+// from the other side itself. The connection's incoming road is the one at
+// the connecting road's start, so every contactPoint is "start".
 void RailBuilder::add_junction(const VertexPlan& plan) {
     if (plan.movements.empty()) {
         return;
@@ -237,33 +248,24 @@ void RailBuilder::add_junction(const VertexPlan& plan) {
     j.id = ids_.junction();
     j.name = std::string(geometry::to_string(vertex.kind)) + " " + std::to_string(vertex.node_id);
     j.user_data.push_back({"osm", "node:" + std::to_string(vertex.node_id)});
-    std::map<std::size_t, std::size_t> connecting; // cut leg -> its connecting road
-    for (std::size_t k = 0; k < plan.legs.size(); ++k) {
-        if (!plan.cut[k]) {
-            continue;
-        }
-        const Leg& leg = plan.legs[k];
-        const double len = geometry::length(in_.fitted.edges[leg.edge].alignment);
-        const std::size_t c = leg.at_start ? add_piece(leg.edge, 0.0, d_start_[leg.edge], j.id)
-                                           : add_piece(leg.edge, len - d_end_[leg.edge], len, j.id);
-        connecting[k] = c;
-        // The connecting road's far end touches the rest of its edge.
-        set_road_link(map_.roads[c], !leg.at_start, map_.roads[main_[leg.edge]].id, leg.at_start);
-    }
-    for (const auto& [u, k] : plan.movements) {
-        const Leg& in = plan.legs[u];
+    std::map<std::size_t, std::size_t> connecting; // movement -> its connecting road
+    std::set<std::size_t> pieced;                  // cut legs whose stretch is mapped to a road already
+    for (std::size_t m = 0; m < plan.movements.size(); ++m) {
+        const auto& [u, k] = plan.movements[m];
         const Leg& cut = plan.legs[k];
-        Road& c = map_.roads[connecting[k]];
-        if ((cut.at_start ? c.predecessor : c.successor).type == ElementType::none) {
-            set_road_link(c, cut.at_start, map_.roads[main_[in.edge]].id, in.at_start);
-        }
-        j.connections.push_back({std::to_string(j.connections.size()), map_.roads[main_[in.edge]].id, c.id,
-                                 cut.at_start ? Contact::start : Contact::end, {{-1, -1}}});
-    }
-    for (const auto& [k, c] : connecting) {
-        const Leg& cut = plan.legs[k];
-        j.connections.push_back({std::to_string(j.connections.size()), map_.roads[main_[cut.edge]].id,
-                                 map_.roads[c].id, cut.at_start ? Contact::end : Contact::start, {{-1, -1}}});
+        const double len = geometry::length(in_.fitted.edges[cut.edge].alignment);
+        // A cut leg with several movements gets a copy per movement; the
+        // profile maps its stretch to the first.
+        const bool piece = pieced.insert(k).second;
+        const std::size_t c = cut.at_start ? add_piece(cut.edge, 0.0, d_start_[cut.edge], j.id, piece)
+                                           : add_piece(cut.edge, len - d_end_[cut.edge], len, j.id, piece);
+        connecting[m] = c;
+        const Road& in = map_.roads[main_[plan.legs[u].edge]];
+        const Road& out = map_.roads[main_[cut.edge]];
+        set_road_link(map_.roads[c], !cut.at_start, out.id, cut.at_start);
+        set_road_link(map_.roads[c], cut.at_start, in.id, plan.legs[u].at_start);
+        j.connections.push_back({std::to_string(j.connections.size()), cut.at_start ? in.id : out.id,
+                                 map_.roads[c].id, Contact::start, {{-1, -1}}});
     }
     for (std::size_t i = 0; i < plan.legs.size(); ++i) {
         const bool moves = std::any_of(plan.movements.begin(), plan.movements.end(),
@@ -287,19 +289,21 @@ void RailBuilder::add_junction(const VertexPlan& plan) {
 // <railroad><switch> on the stem's road: the main track is the connecting
 // road that continues the stem's own fitted chain, the side track the other.
 void RailBuilder::add_switch(const VertexPlan& plan, std::size_t stem, const std::map<std::size_t, std::size_t>& connecting) {
-    std::vector<std::size_t> legs;
-    for (const auto& [u, k] : plan.movements) {
-        if (u == stem) {
-            legs.push_back(k);
+    std::vector<std::size_t> legs, roads; // the stem's two movements: cut leg, connecting road
+    for (std::size_t m = 0; m < plan.movements.size(); ++m) {
+        if (plan.movements[m].first == stem) {
+            legs.push_back(plan.movements[m].second);
+            roads.push_back(connecting.at(m));
         }
     }
     const std::size_t chain = in_.fitted.edges[plan.legs[stem].edge].chain;
     if (in_.fitted.edges[plan.legs[legs[1]].edge].chain == chain) {
         std::swap(legs[0], legs[1]);
+        std::swap(roads[0], roads[1]);
     }
-    auto ref = [&](std::size_t k) {
-        const Road& c = map_.roads[connecting.at(k)];
-        const bool at_start = plan.legs[k].at_start;
+    auto ref = [&](std::size_t i) {
+        const Road& c = map_.roads[roads[i]];
+        const bool at_start = plan.legs[legs[i]].at_start;
         return TrackRef{c.id, at_start ? 0.0 : c.length(), at_start ? "+" : "-"};
     };
     const auto& vertex = in_.graph.vertices[plan.vertex];
@@ -308,8 +312,8 @@ void RailBuilder::add_switch(const VertexPlan& plan, std::size_t stem, const std
     // A vertex with two stems (a double slip) has two switches; names are unique.
     const std::size_t before = switches_at_[plan.vertex]++;
     sw.name = "switch " + std::to_string(vertex.node_id) + (before ? "/" + std::to_string(before + 1) : "");
-    sw.main_track = ref(legs[0]);
-    sw.side_track = ref(legs[1]);
+    sw.main_track = ref(0);
+    sw.side_track = ref(1);
     sw.user_data.push_back({"osm", "node:" + std::to_string(vertex.node_id)});
     map_.roads[main_[plan.legs[stem].edge]].switches.push_back(std::move(sw));
     ++net_.switches;

@@ -9,46 +9,6 @@ namespace railodd::xodr {
 
 namespace {
 
-std::vector<std::vector<Leg>> legs_by_vertex(const geometry::TrackGraph& graph,
-                                             const geometry::FittedNetwork& fitted,
-                                             const std::vector<bool>& written) {
-    std::vector<std::vector<Leg>> legs(graph.vertices.size());
-    for (std::size_t e = 0; e < fitted.edges.size(); ++e) {
-        if (!written[e]) {
-            continue;
-        }
-        const auto& fe = fitted.edges[e];
-        const auto& ge = graph.edges[e];
-        const std::size_t start_v = fe.reversed ? ge.to : ge.from;
-        const std::size_t end_v = fe.reversed ? ge.from : ge.to;
-        const geometry::Pose a = geometry::evaluate(fe.alignment, 0.0);
-        geometry::Pose b = geometry::evaluate(fe.alignment, geometry::length(fe.alignment));
-        b.hdg += std::numbers::pi; // leaving the vertex means running backwards
-        b.curvature = -b.curvature;
-        legs[start_v].push_back({e, true, a});
-        legs[end_v].push_back({e, false, b});
-    }
-    return legs;
-}
-
-// A train can pass from one leg into the other: same point, opposite
-// outgoing headings, curvature continuous (entering along one leg runs it
-// backwards, so the outgoing curvatures must cancel).
-std::string mismatch(const Leg& a, const Leg& b, const PlanTolerances& tol) {
-    const double gap = std::hypot(a.out.x - b.out.x, a.out.y - b.out.y);
-    const double turn = std::abs(std::remainder(a.out.hdg - b.out.hdg - std::numbers::pi, 2 * std::numbers::pi));
-    const double dk = std::abs(a.out.curvature + b.out.curvature);
-    std::ostringstream why;
-    if (gap > tol.gap_m) {
-        why << "ends " << gap << " m apart";
-    } else if (turn > tol.heading_rad) {
-        why << "deflection " << turn * 180.0 / std::numbers::pi << " deg";
-    } else if (dk > tol.curvature) {
-        why << "curvature jump " << dk << " 1/m";
-    }
-    return why.str();
-}
-
 // Two-colours the movement graph (movements always join legs leaving on
 // opposite sides, so it is bipartite) and cuts the larger class of each
 // component: a switch cuts its two diverging legs, a crossing one leg of each
@@ -96,7 +56,7 @@ void choose_cuts(VertexPlan& plan) {
 
 std::vector<VertexPlan> plan_vertices(const geometry::TrackGraph& graph, const geometry::FittedNetwork& fitted,
                                       const std::vector<bool>& written, const PlanTolerances& tolerances) {
-    std::vector<std::vector<Leg>> legs = legs_by_vertex(graph, fitted, written);
+    std::vector<std::vector<Leg>> legs = geometry::legs_by_vertex(graph, fitted, written);
     std::vector<VertexPlan> plans;
     for (std::size_t v = 0; v < legs.size(); ++v) {
         if (legs[v].size() < 2) {
@@ -109,7 +69,7 @@ std::vector<VertexPlan> plan_vertices(const geometry::TrackGraph& graph, const g
         std::vector<std::string> why(plan.legs.size());
         for (std::size_t i = 0; i < plan.legs.size(); ++i) {
             for (std::size_t j = i + 1; j < plan.legs.size(); ++j) {
-                std::string m = mismatch(plan.legs[i], plan.legs[j], tolerances);
+                std::string m = geometry::g2_mismatch(plan.legs[i], plan.legs[j], tolerances);
                 if (m.empty()) {
                     plan.movements.emplace_back(i, j);
                 } else {

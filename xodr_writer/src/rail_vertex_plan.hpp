@@ -4,7 +4,7 @@
 // with opposite headings and matching curvature, i.e. G2), and, at vertices
 // with more than two ends, which ends are cut back to become a junction's
 // connecting roads.
-#include "railodd/geometry/track_fit.hpp"
+#include "railodd/geometry/vertex_legs.hpp"
 
 #include <cstddef>
 #include <string>
@@ -13,11 +13,7 @@
 
 namespace railodd::xodr {
 
-struct Leg {
-    std::size_t edge = 0;
-    bool at_start = false; // the edge's alignment starts at the vertex
-    geometry::Pose out;    // pose leaving the vertex along the edge
-};
+using geometry::Leg;
 
 struct VertexPlan {
     std::size_t vertex = 0;
@@ -30,11 +26,7 @@ struct VertexPlan {
     std::vector<std::pair<std::size_t, std::string>> unlinked; // leg index, why no train passes there
 };
 
-struct PlanTolerances {
-    double gap_m = 1e-3;
-    double heading_rad = 1e-6;
-    double curvature = 1e-6;
-};
+using PlanTolerances = geometry::LegTolerances;
 
 // One plan per vertex with at least two ends of written edges (written[e]).
 std::vector<VertexPlan> plan_vertices(const geometry::TrackGraph& graph, const geometry::FittedNetwork& fitted,

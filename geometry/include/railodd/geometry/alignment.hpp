@@ -59,6 +59,11 @@ Pose evaluate(const Pose& start, const Primitive& primitive, double ds);
 // primitives the later primitive's curvature is reported.
 Pose evaluate(const Alignment& alignment, double s);
 
+// The same curve run the other way: starts at the end pose turned by pi,
+// primitives in reverse order with their curvatures negated. Exact up to the
+// evaluation of the end pose.
+Alignment reversed(const Alignment& alignment);
+
 // Pose at the start of each primitive, chained from the closed-form ends.
 std::vector<Pose> primitive_starts(const Alignment& alignment);
 

@@ -69,6 +69,11 @@ struct FittedNetwork {
     // gave one; 0 for degenerate chains) and the nodes left out as outliers.
     std::vector<double> chain_noise_sigma_m;
     std::size_t outlier_nodes = 0;
+    // Chains reversed so that links run end -> start (chain_orientation.hpp),
+    // and the links a wye or balloon loop leaves running end -> end or
+    // start -> start.
+    std::size_t reversed_chains = 0;
+    std::size_t reversing_links = 0;
 };
 
 // Pairs edge ends at every vertex into through routes (deflection below

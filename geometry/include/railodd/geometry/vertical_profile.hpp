@@ -22,7 +22,9 @@ struct ElevationPoly {
     double d = 0.0;
 };
 
-enum class ElevationSource { dem, osm_ele, flat };
+// interpolated: no data on the track itself; cubic between the heights and
+// grades of the vertices it joins (profile_ties.hpp).
+enum class ElevationSource { dem, osm_ele, interpolated, flat };
 
 const char* to_string(ElevationSource source);
 

@@ -51,7 +51,8 @@ struct Catalog {
 // non-positive dimensions.
 Catalog load_catalog(const std::filesystem::path& path, const odd::Taxonomy& taxonomy);
 
-// The Actor fields an asset defines (not its placement).
-Actor actor_from(const Asset& asset, const std::string& name);
+// The Actor fields an asset defines (not its placement); its catalog entry
+// is named for the target player (target.hpp entry_name).
+Actor actor_from(const Asset& asset, const std::string& name, const std::string& entry);
 
 } // namespace railodd::scenario

@@ -79,12 +79,29 @@ struct Environment {
     double friction_scale = 1.0;       // RoadCondition frictionScaleFactor (rail head condition)
 };
 
+// What a parameter stands for: a value the storyboard uses, or one no
+// OpenSCENARIO action carries (declared so a player or controller can read
+// it; also in the behaviour file's `conditions`).
+enum class ParameterRole {
+    storyboard,    // speeds, assets, the environment
+    choice,        // a template choice, e.g. a signal's aspect
+    degraded_mode, // the degraded mode's id
+    mode_setting,  // a degraded mode's setting without an OpenSCENARIO mapping (GNSS, radio, lens)
+};
+
 // A scenario parameter: declared in the .xosc and used by the actions it
 // drives, so that a ParameterValueDistribution can vary it.
 struct Parameter {
     std::string name; // OpenSCENARIO parameter name without "$"
     std::string type; // "double", "string", "int"
     std::string value;
+    ParameterRole role = ParameterRole::storyboard;
+};
+
+// A point of the ego's run and its distance from the run's start along the track.
+struct TrackSample {
+    double distance_m = 0.0;
+    LanePlacement place;
 };
 
 struct ConcreteScenario {
@@ -110,6 +127,11 @@ struct ConcreteScenario {
     std::vector<std::pair<std::string, std::string>> conditions;
     double stop_time_s = 60.0; // simulation stops at this time ...
     std::optional<LanePlacement> ego_end; // ... or when the ego reaches this place
+    // The ego's run sampled along its line, first the start, last the end:
+    // for players that follow positions rather than route over the map
+    // (ScenarioRunner: CARLA's router plans on driving lanes only). Empty
+    // unless the target needs it (GenerateOptions::target).
+    std::vector<TrackSample> ego_track;
 };
 
 

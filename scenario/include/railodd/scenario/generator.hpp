@@ -8,6 +8,7 @@
 #include "railodd/scenario/catalog.hpp"
 #include "railodd/scenario/concrete.hpp"
 #include "railodd/scenario/strategies.hpp"
+#include "railodd/scenario/target.hpp"
 #include "railodd/scenario/templates.hpp"
 
 #include <cstddef>
@@ -26,6 +27,10 @@ struct GenerateOptions {
     std::string map_file;        // LogicFile path as the .xosc files will reference it
     std::string catalog_dir = "catalogs";
     std::string date = "2026-01-01T00:00:00"; // FileHeader date (the map's)
+    // The player: names the catalog entries (target.hpp entry_name) and
+    // samples the ego's run where the target cannot route it
+    // (ConcreteScenario::ego_track).
+    Target target = Target::esmini;
 };
 
 // One ODD element and attribute value a scenario exercises.

@@ -14,6 +14,7 @@
 // scenario file. Actor::properties therefore only reach the output through the
 // catalog.
 #include "railodd/scenario/concrete.hpp"
+#include "railodd/scenario/target.hpp"
 
 #include <filesystem>
 #include <string>
@@ -23,8 +24,27 @@
 namespace railodd::scenario {
 
 struct WriteOptions {
-    // OpenSCENARIO 1.rev_minor: 2 (default), 1 or 3. Others throw UsageError.
+    // OpenSCENARIO 1.rev_minor: 2 (default), 1 or 3 for esmini, 0 for carla.
+    // Others throw UsageError.
     int rev_minor = 2;
+    // The player: the writer writes only what it reads (target.hpp).
+    Target target = Target::esmini;
+};
+
+// Something of the scenario the target cannot express: the parameter that
+// keeps it (declared in the document with `value`) and why.
+struct Degradation {
+    std::string name;
+    std::string value;
+    std::string reason;
+};
+
+struct XoscDocument {
+    std::string text;
+    // Empty for esmini. For carla every declared parameter no element
+    // ScenarioRunner reads carries, and every value dropped from the
+    // storyboard (declared for it), in declaration order.
+    std::vector<Degradation> degraded_for_target;
 };
 
 // The catalog a CatalogReference of an actor of `kind` names:
@@ -34,6 +54,7 @@ const char* catalog_name(Actor::Kind kind);
 
 // The scenario document. Parameters declared in sc.parameters with the names of
 // parameter_names (concrete.hpp) are referenced as "$Name" where they apply.
+XoscDocument xosc_document(const ConcreteScenario& sc, const WriteOptions& opt = {});
 std::string xosc_text(const ConcreteScenario& sc, const WriteOptions& opt = {});
 void write_xosc(const ConcreteScenario& sc, const std::filesystem::path& file, const WriteOptions& opt = {});
 
@@ -58,6 +79,8 @@ using ValueSet = std::vector<std::pair<std::string, std::string>>;
 // distribution file): a deterministic ValueSetDistribution with one
 // ParameterValueSet per non-empty entry of `value_sets` (the schema requires
 // an assignment per set; without any, Deterministic stays empty).
+// OpenSCENARIO 1.0 has no ParameterValueDistribution: rev_minor 0 throws
+// UsageError.
 std::string distribution_text(const std::string& scenario_file_rel, const std::vector<ValueSet>& value_sets,
                               const std::string& description, const std::string& date,
                               const WriteOptions& opt = {});

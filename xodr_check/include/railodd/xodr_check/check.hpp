@@ -21,6 +21,8 @@ struct Limits {
     double s_chain_relative = 1e-6;     // s_i + length_i = s_{i+1}
     double length_m = 1e-3;             // sum of record lengths = road @length; s ranges of references
     double elevation_gap_m = 1e-3;      // elevation polynomials between records
+    double link_height_m = 0.05;        // height step between linked roads and junction contacts
+    double link_grade = 0.01;           // grade change there (rise over run, taken along the link)
 };
 
 enum class Severity { error, warning };
@@ -63,6 +65,8 @@ struct Summary {
     Worst heading_jump_rad;
     Worst rail_curvature_jump; // 1/m, rail roads only
     Worst elevation_gap_m;
+    Worst link_height_m; // height step across road links and junction contacts
+    Worst link_grade;    // grade change there, along the link
 };
 
 struct CheckResult {

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace railodd::xodr {
@@ -60,6 +61,9 @@ struct UnlinkedEnd {
 
 struct RailNetwork {
     std::vector<std::vector<RoadPiece>> pieces; // per graph edge, ascending s0; empty if not written
+    // (edge, piece): the further connecting roads of a junction leg with
+    // several movements, over a stretch `pieces` already maps to a road.
+    std::vector<std::pair<std::size_t, RoadPiece>> copies;
     std::vector<UnwrittenEdge> unwritten;
     std::vector<UnlinkedEnd> unlinked;          // edge ends at a vertex with other tracks but no movement
     std::size_t direct_links = 0;
