@@ -10,15 +10,18 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h> // getpid
+
 namespace railodd::test {
 
 namespace fs = std::filesystem;
 
-// A fresh folder per test, named after it.
+// A fresh folder per test, named after it and the process: two builds'
+// test runs at once (a release and a sanitizer build) must not share one.
 inline fs::path scratch_dir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     fs::path dir = fs::temp_directory_path() / "railodd-tests" /
-                   (std::string{info->test_suite_name()} + "." + info->name());
+                   (std::string{info->test_suite_name()} + "." + info->name() + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
