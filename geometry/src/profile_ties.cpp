@@ -33,28 +33,24 @@ struct End {
     int side = -1;
 };
 
-// Sides of each vertex: legs a train passes between lie on opposite sides.
+// Sides of each vertex (movement_sides): legs a train passes between lie on
+// opposite sides.
 std::vector<std::vector<End>> ends_by_vertex(const TrackGraph& graph, const FittedNetwork& net) {
     const std::vector<std::vector<Leg>> legs = legs_by_vertex(graph, net);
     std::vector<std::vector<End>> out(legs.size());
     for (std::size_t v = 0; v < legs.size(); ++v) {
         const auto& at = legs[v];
-        std::vector<End>& ends = out[v];
-        for (const Leg& l : at) {
-            ends.push_back({l.edge, l.at_start, -1});
-        }
+        std::vector<std::pair<std::size_t, std::size_t>> movements;
         for (std::size_t i = 0; i < at.size(); ++i) {
-            for (std::size_t j = 0; j < at.size(); ++j) {
-                if (i != j && g2_mismatch(at[i], at[j]).empty()) {
-                    // Greedy two-colouring: the movements at one vertex are bipartite.
-                    if (ends[i].side < 0) {
-                        ends[i].side = ends[j].side < 0 ? 0 : 1 - ends[j].side;
-                    }
-                    if (ends[j].side < 0) {
-                        ends[j].side = 1 - ends[i].side;
-                    }
+            for (std::size_t j = i + 1; j < at.size(); ++j) {
+                if (g2_mismatch(at[i], at[j]).empty()) {
+                    movements.emplace_back(i, j);
                 }
             }
+        }
+        const LegSides sides = movement_sides(at.size(), movements);
+        for (std::size_t i = 0; i < at.size(); ++i) {
+            out[v].push_back({at[i].edge, at[i].at_start, sides.colour[i]});
         }
     }
     return out;

@@ -44,4 +44,33 @@ std::string g2_mismatch(const Leg& a, const Leg& b, const LegTolerances& tol) {
     return why.str();
 }
 
+LegSides movement_sides(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& movements) {
+    std::vector<std::vector<std::size_t>> adj(n);
+    for (const auto& [a, b] : movements) {
+        adj[a].push_back(b);
+        adj[b].push_back(a);
+    }
+    LegSides out{std::vector<int>(n, -1), std::vector<long>(n, -1)};
+    for (std::size_t root = 0; root < n; ++root) {
+        if (out.colour[root] >= 0 || adj[root].empty()) {
+            continue;
+        }
+        std::vector<std::size_t> stack{root};
+        out.colour[root] = 0;
+        out.component[root] = static_cast<long>(root);
+        while (!stack.empty()) {
+            const std::size_t v = stack.back();
+            stack.pop_back();
+            for (const std::size_t w : adj[v]) {
+                if (out.colour[w] < 0) {
+                    out.colour[w] = 1 - out.colour[v];
+                    out.component[w] = static_cast<long>(root);
+                    stack.push_back(w);
+                }
+            }
+        }
+    }
+    return out;
+}
+
 } // namespace railodd::geometry

@@ -9,41 +9,23 @@ namespace railodd::xodr {
 
 namespace {
 
-// Two-colours the movement graph (movements always join legs leaving on
-// opposite sides, so it is bipartite) and cuts the larger class of each
-// component: a switch cuts its two diverging legs, a crossing one leg of each
-// route. Ties keep the lowest leg uncut.
+// Cuts the larger side of each component of the movement graph
+// (geometry::movement_sides): a switch cuts its two diverging legs, a
+// crossing one leg of each route. Ties keep the lowest leg uncut.
 void choose_cuts(VertexPlan& plan) {
     const std::size_t n = plan.legs.size();
-    std::vector<std::vector<std::size_t>> adj(n);
-    for (const auto& [a, b] : plan.movements) {
-        adj[a].push_back(b);
-        adj[b].push_back(a);
+    const geometry::LegSides sides = geometry::movement_sides(n, plan.movements);
+    std::vector<long> size(n, 0), ones(n, 0); // per component root
+    for (std::size_t v = 0; v < n; ++v) {
+        if (sides.component[v] >= 0) {
+            ++size[sides.component[v]];
+            ones[sides.component[v]] += sides.colour[v];
+        }
     }
-    std::vector<int> colour(n, -1);
     plan.cut.assign(n, false);
-    for (std::size_t root = 0; root < n; ++root) {
-        if (colour[root] >= 0 || adj[root].empty()) {
-            continue;
-        }
-        std::vector<std::size_t> component{root}, stack{root};
-        colour[root] = 0;
-        while (!stack.empty()) {
-            const std::size_t v = stack.back();
-            stack.pop_back();
-            for (std::size_t w : adj[v]) {
-                if (colour[w] < 0) {
-                    colour[w] = 1 - colour[v];
-                    component.push_back(w);
-                    stack.push_back(w);
-                }
-            }
-        }
-        const auto ones = std::count_if(component.begin(), component.end(), [&](std::size_t v) { return colour[v] == 1; });
-        const int cut_colour = ones * 2 >= static_cast<long>(component.size()) ? 1 : 0;
-        for (std::size_t v : component) {
-            plan.cut[v] = colour[v] == cut_colour;
-        }
+    for (std::size_t v = 0; v < n; ++v) {
+        const long c = sides.component[v];
+        plan.cut[v] = c >= 0 && sides.colour[v] == (ones[c] * 2 >= size[c] ? 1 : 0);
     }
     for (auto& [a, b] : plan.movements) {
         if (plan.cut[a]) {

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace railodd::geometry {
@@ -31,5 +32,15 @@ std::vector<std::vector<Leg>> legs_by_vertex(const TrackGraph& graph, const Fitt
 // Why a train cannot pass from one leg into the other ("ends 0.2 m apart",
 // "deflection 3 deg", "curvature jump ..."); empty when it can.
 std::string g2_mismatch(const Leg& a, const Leg& b, const LegTolerances& tolerances = {});
+
+// The sides of a vertex: movements always join legs leaving on opposite
+// sides, so the graph they form over n legs is bipartite. Per leg, its colour
+// (0 / 1; -1 where no movement touches it) and its component (the lowest leg
+// of it; -1 likewise). Each component is coloured from its lowest leg, 0.
+struct LegSides {
+    std::vector<int> colour;
+    std::vector<long> component;
+};
+LegSides movement_sides(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& movements);
 
 } // namespace railodd::geometry
