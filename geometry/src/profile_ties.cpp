@@ -12,17 +12,6 @@ namespace railodd::geometry {
 
 namespace {
 
-std::size_t poly_index(const std::vector<ElevationPoly>& polys, double s) {
-    const auto it = std::upper_bound(polys.begin(), polys.end(), s, [](double v, const ElevationPoly& p) { return v < p.s; });
-    return it == polys.begin() ? 0 : static_cast<std::size_t>(it - polys.begin()) - 1;
-}
-
-double grade_at(const std::vector<ElevationPoly>& polys, double s) {
-    const ElevationPoly& p = polys[poly_index(polys, s)];
-    const double ds = s - p.s;
-    return p.b + ds * (2.0 * p.c + 3.0 * ds * p.d);
-}
-
 bool measured(const VerticalProfile& p) { return p.source == ElevationSource::dem || p.source == ElevationSource::osm_ele; }
 
 // One track end at a vertex: its side of the vertex (0 / 1 from the
@@ -166,7 +155,7 @@ struct Network {
             return (h[vertex_at(end.edge, !end.at_start)] - h[vertex_at(end.edge, end.at_start)]) / std::max(l, 1e-9);
         }
         const auto& polys = profiles[end.edge].polys;
-        return end.at_start ? grade_at(polys, 0.0) : -grade_at(polys, l);
+        return end.at_start ? gradient_at(polys, 0.0) : -gradient_at(polys, l);
     }
 };
 
@@ -241,7 +230,7 @@ ProfileTies tie_profiles(const TrackGraph& graph, const FittedNetwork& net, std:
             ++ties.interpolated;
         }
         add_hermite(p.polys, l, t[e].h0 - elevation_at(p.polys, 0.0), t[e].h1 - elevation_at(p.polys, l),
-                    t[e].g0 - grade_at(p.polys, 0.0), t[e].g1 - grade_at(p.polys, l));
+                    t[e].g0 - gradient_at(p.polys, 0.0), t[e].g1 - gradient_at(p.polys, l));
         p.max_gradient_permille = 1000.0 * vertical::max_abs_gradient(p.polys, l);
         p.steep = vertical::steep_stretches(p.polys, l, ProfileOptions{}.steep_permille / 1000.0);
     }
