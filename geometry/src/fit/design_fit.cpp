@@ -27,6 +27,9 @@ struct Pass {
     FrameDesign design;
     Alignment alignment;
     std::vector<double> distance; // of every node to the design, in the frame
+    std::vector<FrameNode> nodes; // in the pass's frame, weighted
+    DesignDpOptions options;
+    std::optional<ReferenceLine> frame;
 };
 
 // The parameters the design spent on the nodes: the start state and each
@@ -151,7 +154,68 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     for (const double r : frame_residuals(pass.design, nodes)) {
         pass.distance.push_back(std::abs(r));
     }
+    pass.nodes = std::move(nodes);
+    pass.options = o;
+    pass.frame = ref;
     return pass;
+}
+
+// Whether the design spends two or more knots between node i's neighbours.
+bool bent_to(const Pass& pass, std::size_t i) {
+    if (i == 0 || i + 1 >= pass.nodes.size() || pass.nodes[i].w == 0.0) {
+        return false;
+    }
+    const auto& el = pass.design.elements;
+    const double lo = std::min(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
+    const double hi = std::max(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
+    return std::count_if(el.begin() + 1, el.end(), [&](const FrameElement& e) { return e.s0 > lo && e.s0 < hi; }) >= 2;
+}
+
+// The nodes `out` left out of the pass where that lowers its cost, with one
+// parameter for each node's own position.
+bool leave_out(Pass& pass, const std::vector<std::size_t>& out, std::vector<double>& weight) {
+    std::vector<FrameNode> without = pass.nodes;
+    for (const std::size_t i : out) {
+        without[i].w = 0.0;
+    }
+    FrameDesign d = refine_structure(without, pass.design.elements, pass.options);
+    if (d.cost + static_cast<double>(out.size()) * pass.options.parameter_penalty >= pass.design.cost) {
+        return false;
+    }
+    for (const std::size_t i : out) {
+        weight[i] = 0.0;
+    }
+    pass.nodes = std::move(without);
+    pass.design = std::move(d);
+    return true;
+}
+
+// Nodes the design bends to (bent_to). A stray node where nodes are sparse
+// (near a free end, across a long straight) is fitted exactly by a few
+// short elements, and no residual shows it. Each is tested by model
+// selection: left out, alone or with the next such node within two (two
+// strays a node apart bend the design together), the structure searched
+// again locally. True where any is left out.
+bool reject_bent_nodes(Pass& pass, std::vector<double>& weight) {
+    bool any = false;
+    for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
+        if (!bent_to(pass, i)) {
+            continue;
+        }
+        bool out = leave_out(pass, {i}, weight);
+        for (std::size_t j = i + 1; !out && j <= i + 2; ++j) {
+            out = bent_to(pass, j) && leave_out(pass, {i, j}, weight);
+        }
+        any = any || out;
+    }
+    if (any) {
+        pass.alignment = to_alignment(*pass.frame, pass.design);
+        pass.distance.clear();
+        for (const double r : frame_residuals(pass.design, pass.nodes)) {
+            pass.distance.push_back(std::abs(r));
+        }
+    }
+    return any;
 }
 
 // The design as clothoids whose knots keep its structure (lines at zero
@@ -211,6 +275,11 @@ FitResult polish(const Pass& pass, const std::vector<Point2>& p, const std::vect
         so.point_scale.push_back(std::sqrt(w));
     }
     so.abandon_loops = true;
+    const auto& el = pass.design.elements;
+    so.transition_prior.assign(el.size(), 0.0);
+    for (std::size_t j = 1; j + 1 < el.size(); ++j) {
+        so.transition_prior[j] = el[j].kind == ElementKind::transition ? transition_prior : 0.0;
+    }
     const SolveReport r = solve(m, p, so);
     FitResult before{pass.alignment, measure_fit(pass.alignment, all)};
     if (!r.end_met || r.gave_up) {
@@ -256,6 +325,10 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
         if (settled) {
             break;
         }
+    }
+    if (reject_bent_nodes(pass, weight)) {
+        const FrameDesign previous = pass.design;
+        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end, &previous);
     }
     std::vector<Point> all;
     for (const auto& q : p) {

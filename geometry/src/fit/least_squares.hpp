@@ -41,6 +41,12 @@ struct SolveOptions {
     // a robust fit's reweighting (best_design), so that an outlier node no
     // longer pulls the curve while the design is fitted.
     std::vector<double> point_scale;
+    // Per segment, the weight of a prior on its length (empty: none): a
+    // transition's length against the design rule's for its curvature
+    // change (transition_length_for), cost w ln(L / L_rule)^2, the design
+    // search's own prior (design_local.cpp), so the polish keeps what the
+    // search chose it for.
+    std::vector<double> transition_prior;
 };
 
 struct SolveReport {

@@ -1,6 +1,7 @@
 // Feet, residual rows and their Jacobian (residuals.hpp).
 #include "residuals.hpp"
 
+#include "design_dp.hpp"
 #include "end_constraint.hpp"
 
 #include "railodd/geometry/indexed_alignment.hpp"
@@ -110,6 +111,9 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     if (p.opt.ridge_sigma > 0) {
         rows += m.knot_var.size();
     }
+    if (!p.opt.transition_prior.empty()) {
+        rows += m.segments();
+    }
     return rows;
 }
 
@@ -162,7 +166,19 @@ double ridge_row(const CurvatureModel& m, const Problem& p, std::size_t k) {
     return huber(m.knot_curvature(k) * std::sqrt(0.5 * (left + right) / 20.0) / p.opt.ridge_sigma);
 }
 
-// Residual rows: the point rows, then curvature kinks, then the ridge. The
+// A segment's length against the design rule's for its curvature change
+// (zero where it has no prior or no change).
+double transition_row(const CurvatureModel& m, const Problem& p, std::size_t j) {
+    const double w = j < p.opt.transition_prior.size() ? p.opt.transition_prior[j] : 0.0;
+    const double dk = std::abs(m.knot_curvature(j + 1) - m.knot_curvature(j));
+    if (w <= 0.0 || dk < 1e-5) {
+        return 0.0;
+    }
+    return std::sqrt(w) * std::log(m.lengths[j] / transition_length_for(dk));
+}
+
+// Residual rows: the point rows, then curvature kinks, the ridge, the
+// transition priors. The
 // end pose is a constraint (end_constraint.hpp), or weighted rows appended
 // where it cannot be one.
 void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
@@ -176,6 +192,11 @@ void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
     if (p.opt.ridge_sigma > 0) {
         for (std::size_t k = 0; k < m.knot_var.size(); ++k) {
             r[row++] = ridge_row(m, p, k);
+        }
+    }
+    if (!p.opt.transition_prior.empty()) {
+        for (std::size_t j = 0; j < m.segments(); ++j) {
+            r[row++] = transition_row(m, p, j);
         }
     }
 }
@@ -203,6 +224,13 @@ void smoothness_column(const CurvatureModel& m2, const ParameterMap& map, std::s
         for (std::size_t k = a; k < knots && k <= b + 1; ++k) {
             const long at = static_cast<long>(row + k);
             J(at, col) = (ridge_row(m2, p, k) - r[at]) / h;
+        }
+        row += knots;
+    }
+    if (!p.opt.transition_prior.empty()) {
+        for (std::size_t j = a == 0 ? 0 : a - 1; j < m2.segments() && j <= b + 1; ++j) {
+            const long at = static_cast<long>(row + j);
+            J(at, col) = (transition_row(m2, p, j) - r[at]) / h;
         }
     }
 }
