@@ -102,21 +102,83 @@ void Search::advance(double to, std::size_t& next) {
     }
 }
 
+// The best child of each parent element (kind and start knot), the `spawn`
+// best such, per kind of the new element: children of one family differ
+// little in state, while another family's (a long transition against a
+// short one after a line) may reach a curvature the next nodes call for even
+// if it costs more now (CPOP keeps every cost that is least for some state;
+// this keeps a few that differ).
+struct Brood {
+    struct Family {
+        std::pair<ElementKind, double> key;
+        int parent = 0;
+        Hypothesis child;
+    };
+    std::vector<Family> best; // at most `spawn`, ascending by the child's value
+
+    // What a child must cost less than to enter.
+    double bar(std::size_t spawn) const {
+        return best.size() < spawn ? std::numeric_limits<double>::infinity() : best.back().child.value;
+    }
+
+    void offer(std::pair<ElementKind, double> key, int parent, Hypothesis&& g, std::size_t spawn) {
+        auto same = std::find_if(best.begin(), best.end(), [&](const Family& f) { return f.key == key; });
+        if (same != best.end()) {
+            if (g.value >= same->child.value) {
+                return;
+            }
+            best.erase(same);
+        } else if (g.value >= bar(spawn)) {
+            return;
+        }
+        const auto at = std::upper_bound(best.begin(), best.end(), g.value,
+                                         [](double v, const Family& f) { return v < f.child.value; });
+        best.insert(at, Family{key, parent, std::move(g)});
+        if (best.size() > spawn) {
+            best.pop_back();
+        }
+    }
+};
+
 void Search::spawn(double s) {
     // Every child is built and valued exactly: a line or a second transition
     // must meet the knot at zero curvature, which the parent's own minimum
-    // does not tell (ranking by it lost the way back to straight track).
-    std::vector<Hypothesis> children[3];
-    std::vector<int> parents[3];
-    for (const Hypothesis& h : live_) {
+    // does not tell (ranking by it lost the way back to straight track). A
+    // child costs at least its parent's minimum plus its penalty (it is the
+    // parent's cost under constraints), so parents are taken in order of
+    // value and a kind's children no longer built once that bound passes
+    // the kind's bar: the same broods as building them all.
+    std::vector<std::size_t> order(live_.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return live_[a].value < live_[b].value; });
+    Brood brood[3];
+    for (const std::size_t i : order) {
+        const Hypothesis& h = live_[i];
+        // The minima are rounded by about a millionth of their value.
+        const double floor = h.value - 1e-4 * (1.0 + std::abs(h.value));
+        bool open[3] = {false, false, false};
+        for (const ElementKind kind : design::kinds) {
+            const int k = static_cast<int>(kind);
+            open[k] = design::may_follow(h.kind, kind) &&
+                      floor + design::element_penalty(kind, o_, false) < brood[k].bar(o_.spawn);
+        }
+        if (!open[0] && !open[1] && !open[2]) {
+            if (floor + o_.parameter_penalty >= std::max({brood[0].bar(o_.spawn), brood[1].bar(o_.spawn), brood[2].bar(o_.spawn)})) {
+                break;
+            }
+            continue;
+        }
         if (s - h.start < design::min_length(h.kind, o_) - 1e-9) {
             continue;
         }
         const Quad knot = design::to_knot(h.f, (s - h.start) / S);
+        const Record& parent = records_[static_cast<std::size_t>(h.record)];
         for (const ElementKind kind : design::kinds) {
             Hypothesis g;
             g.f = knot;
-            if (!design::may_follow(h.kind, kind) ||
+            if (!open[static_cast<int>(kind)] ||
                 !design::open_element(g.f, kind, h.kind == ElementKind::transition && kind == ElementKind::transition)) {
                 continue;
             }
@@ -125,35 +187,14 @@ void Search::spawn(double s) {
             g.covered = s;
             g.kind = kind;
             g.value = design::minimum(g.f);
-            children[static_cast<int>(kind)].push_back(std::move(g));
-            parents[static_cast<int>(kind)].push_back(h.record);
+            brood[static_cast<int>(kind)].offer({parent.kind, parent.s}, h.record, std::move(g), o_.spawn);
         }
     }
-    for (int k = 0; k < 3; ++k) {
-        std::vector<std::size_t> order(children[k].size());
-        for (std::size_t i = 0; i < order.size(); ++i) {
-            order[i] = i;
-        }
-        std::sort(order.begin(), order.end(),
-                  [&](std::size_t a, std::size_t b) { return children[k][a].value < children[k][b].value; });
-        // The best child of each parent element (kind and start knot), the
-        // `spawn` best such: children of one family differ little in state,
-        // while another family's (a long transition against a short one
-        // after a line) may reach a curvature the next nodes call for even
-        // if it costs more now (CPOP keeps every cost that is least for
-        // some state; this keeps a few that differ).
-        std::vector<std::pair<ElementKind, double>> families;
-        for (std::size_t j = 0; j < order.size() && families.size() < o_.spawn; ++j) {
-            const Record& parent = records_[static_cast<std::size_t>(parents[k][order[j]])];
-            const std::pair<ElementKind, double> family{parent.kind, parent.s};
-            if (std::find(families.begin(), families.end(), family) != families.end()) {
-                continue;
-            }
-            families.push_back(family);
-            Hypothesis& g = children[k][order[j]];
-            g.record = static_cast<int>(records_.size());
-            records_.push_back({parents[k][order[j]], s, g.kind});
-            live_.push_back(std::move(g));
+    for (Brood& b : brood) {
+        for (Brood::Family& f : b.best) {
+            f.child.record = static_cast<int>(records_.size());
+            records_.push_back({f.parent, s, f.child.kind});
+            live_.push_back(std::move(f.child));
         }
     }
 }

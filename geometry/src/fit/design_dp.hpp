@@ -79,6 +79,9 @@ std::vector<FrameNode> by_chainage(std::vector<FrameNode> nodes);
 // elements extended beyond their ends), in the nodes' order: one sweep.
 std::vector<double> frame_residuals(const FrameDesign& design, const std::vector<FrameNode>& nodes);
 
+// The design's state at chainage t (the first and last elements extended).
+FrameState design_state(const FrameDesign& design, double t);
+
 // Nodes in any order; at least one. Throws std::invalid_argument for an
 // empty range or no nodes.
 FrameDesign design_dp(const std::vector<FrameNode>& nodes, const DesignDpOptions& options);

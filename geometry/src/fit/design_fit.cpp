@@ -2,6 +2,7 @@
 
 #include "curvature_model.hpp"
 #include "design_dp.hpp"
+#include "design_pass.hpp"
 #include "outlier_nodes.hpp"
 #include "reference_line.hpp"
 
@@ -23,14 +24,6 @@ constexpr double penalty_per_log_node = 1.5;
 constexpr double curvature_weight = 300.0;
 constexpr double transition_prior = 3.0;
 
-struct Pass {
-    FrameDesign design;
-    Alignment alignment;
-    std::vector<double> distance; // of every node to the design, in the frame
-    std::vector<FrameNode> nodes; // in the pass's frame, weighted
-    DesignDpOptions options;
-    std::optional<ReferenceLine> frame;
-};
 
 // The parameters the design spent on the nodes: the start state and each
 // element's length, a transition's slope besides.
@@ -48,7 +41,7 @@ std::size_t parameters(const FrameDesign& d) {
 // a dozen nodes a few parameters cannot tell its scatter alone: from its
 // own residuals it drifts up, the penalty in units of it grows, fewer
 // elements fit, and the residuals grow again.
-double residual_sigma(const Pass& pass, const std::vector<double>& weight, double prior_m) {
+double residual_sigma(const DesignPass& pass, const std::vector<double>& weight, double prior_m) {
     constexpr double prior_nodes = 10.0;
     std::vector<double> kept;
     for (std::size_t i = 0; i < weight.size(); ++i) {
@@ -124,7 +117,7 @@ std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOpt
 // One pass in the frame of `ref`: the search, or where the previous pass's
 // design is given, the local search from its structure (later passes
 // refine the frame and the noise, not the structure's discovery).
-Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
+DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
               const std::optional<Pose>& start, const std::optional<Pose>& end, const FrameDesign* previous) {
     std::vector<FrameNode> nodes = develop(ref, p);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -148,7 +141,7 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     o.curvature_weight = curvature_weight;
     o.transition_prior = transition_prior;
     const std::vector<FrameElement> seed = carried(previous, o);
-    Pass pass;
+    DesignPass pass;
     pass.design = seed.empty() ? design_dp(nodes, o) : refine_structure(nodes, seed, o);
     pass.alignment = to_alignment(ref, pass.design);
     for (const double r : frame_residuals(pass.design, nodes)) {
@@ -157,72 +150,15 @@ Pass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std:
     pass.nodes = std::move(nodes);
     pass.options = o;
     pass.frame = ref;
+    pass.sigma = sigma;
     return pass;
-}
-
-// Whether the design spends two or more knots between node i's neighbours.
-bool bent_to(const Pass& pass, std::size_t i) {
-    if (i == 0 || i + 1 >= pass.nodes.size() || pass.nodes[i].w == 0.0) {
-        return false;
-    }
-    const auto& el = pass.design.elements;
-    const double lo = std::min(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
-    const double hi = std::max(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
-    return std::count_if(el.begin() + 1, el.end(), [&](const FrameElement& e) { return e.s0 > lo && e.s0 < hi; }) >= 2;
-}
-
-// The nodes `out` left out of the pass where that lowers its cost, with one
-// parameter for each node's own position.
-bool leave_out(Pass& pass, const std::vector<std::size_t>& out, std::vector<double>& weight) {
-    std::vector<FrameNode> without = pass.nodes;
-    for (const std::size_t i : out) {
-        without[i].w = 0.0;
-    }
-    FrameDesign d = refine_structure(without, pass.design.elements, pass.options);
-    if (d.cost + static_cast<double>(out.size()) * pass.options.parameter_penalty >= pass.design.cost) {
-        return false;
-    }
-    for (const std::size_t i : out) {
-        weight[i] = 0.0;
-    }
-    pass.nodes = std::move(without);
-    pass.design = std::move(d);
-    return true;
-}
-
-// Nodes the design bends to (bent_to). A stray node where nodes are sparse
-// (near a free end, across a long straight) is fitted exactly by a few
-// short elements, and no residual shows it. Each is tested by model
-// selection: left out, alone or with the next such node within two (two
-// strays a node apart bend the design together), the structure searched
-// again locally. True where any is left out.
-bool reject_bent_nodes(Pass& pass, std::vector<double>& weight) {
-    bool any = false;
-    for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
-        if (!bent_to(pass, i)) {
-            continue;
-        }
-        bool out = leave_out(pass, {i}, weight);
-        for (std::size_t j = i + 1; !out && j <= i + 2; ++j) {
-            out = bent_to(pass, j) && leave_out(pass, {i, j}, weight);
-        }
-        any = any || out;
-    }
-    if (any) {
-        pass.alignment = to_alignment(*pass.frame, pass.design);
-        pass.distance.clear();
-        for (const double r : frame_residuals(pass.design, pass.nodes)) {
-            pass.distance.push_back(std::abs(r));
-        }
-    }
-    return any;
 }
 
 // The design as clothoids whose knots keep its structure (lines at zero
 // curvature, an arc's two knots one variable, a transition meeting a line or
 // another transition at zero), every length free: what the exact polish
 // moves.
-CurvatureModel structure_model(const Pass& pass, const std::optional<Pose>& start, const std::optional<Pose>& end) {
+CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>& start, const std::optional<Pose>& end) {
     const auto& el = pass.design.elements;
     CurvatureModel m;
     m.start = start.value_or(pass.alignment.start);
@@ -258,7 +194,7 @@ CurvatureModel structure_model(const Pass& pass, const std::optional<Pose>& star
 // fixed: what the frame's small-angle model left (second order in the
 // offsets, the lengths along a curve). The alignment kept and its distances
 // to the nodes (`all`, the same nodes as p).
-FitResult polish(const Pass& pass, const std::vector<Point2>& p, const std::vector<Point>& all,
+FitResult polish(const DesignPass& pass, const std::vector<Point2>& p, const std::vector<Point>& all,
                  const std::vector<double>& weight, double sigma, const std::optional<Pose>& start,
                  const std::optional<Pose>& end) {
     CurvatureModel m = structure_model(pass, start, end);
@@ -313,7 +249,7 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
-    Pass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr);
+    DesignPass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
@@ -326,7 +262,7 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
             break;
         }
     }
-    if (reject_bent_nodes(pass, weight)) {
+    if (settle_node_weights(pass, weight)) {
         const FrameDesign previous = pass.design;
         pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end, &previous);
     }

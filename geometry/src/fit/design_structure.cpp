@@ -25,6 +25,16 @@ std::vector<FrameNode> by_chainage(std::vector<FrameNode> n) {
     return n;
 }
 
+namespace {
+
+// The state u past the start of element e, from the state (z, dz) there.
+FrameState along(const FrameElement& e, double z, double dz, double u) {
+    const double L = e.s1 - e.s0, g = L > 0.0 ? (e.k1 - e.k0) / L : 0.0;
+    return {z + dz * u + e.k0 * u * u / 2 + g * u * u * u / 6, dz + e.k0 * u + g * u * u / 2, e.k0 + g * u};
+}
+
+} // namespace
+
 std::vector<double> frame_residuals(const FrameDesign& d, const std::vector<FrameNode>& nodes) {
     std::vector<std::size_t> order(nodes.size());
     for (std::size_t i = 0; i < order.size(); ++i) {
@@ -32,23 +42,26 @@ std::vector<double> frame_residuals(const FrameDesign& d, const std::vector<Fram
     }
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nodes[a].t < nodes[b].t; });
     std::vector<double> r(nodes.size(), 0.0);
-    double z = d.start.z, dz = d.start.dz; // at the start of element j
+    FrameState at = d.start; // at the start of element j
     std::size_t j = 0;
     for (const std::size_t i : order) {
-        const double t = nodes[i].t;
-        while (j + 1 < d.elements.size() && t > d.elements[j].s1) {
-            const FrameElement& e = d.elements[j];
-            const double L = e.s1 - e.s0, g = L > 0.0 ? (e.k1 - e.k0) / L : 0.0;
-            z += dz * L + e.k0 * L * L / 2 + g * L * L * L / 6;
-            dz += e.k0 * L + g * L * L / 2;
+        while (j + 1 < d.elements.size() && nodes[i].t > d.elements[j].s1) {
+            at = along(d.elements[j], at.z, at.dz, d.elements[j].s1 - d.elements[j].s0);
             ++j;
         }
-        const FrameElement& e = d.elements[j];
-        const double L = e.s1 - e.s0, g = L > 0.0 ? (e.k1 - e.k0) / L : 0.0;
-        const double u = t - e.s0;
-        r[i] = nodes[i].z - (z + dz * u + e.k0 * u * u / 2 + g * u * u * u / 6);
+        r[i] = nodes[i].z - along(d.elements[j], at.z, at.dz, nodes[i].t - d.elements[j].s0).z;
     }
     return r;
+}
+
+FrameState design_state(const FrameDesign& d, double t) {
+    FrameState at = d.start;
+    std::size_t j = 0;
+    while (j + 1 < d.elements.size() && t > d.elements[j].s1) {
+        at = along(d.elements[j], at.z, at.dz, d.elements[j].s1 - d.elements[j].s0);
+        ++j;
+    }
+    return along(d.elements[j], at.z, at.dz, t - d.elements[j].s0);
 }
 
 bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& n, std::size_t next,

@@ -1,0 +1,200 @@
+// Which nodes a pass of the design search follows (design_pass.hpp): a
+// stray node the design bent to, a far node kept, a left-out node near a
+// free end that was the good one of two. Each is a model choice, made by
+// cost: the structure searched again over a window of nodes around it
+// (design_dp), spliced in and refined over the chain, with one parameter
+// for each node left out (its own position).
+#include "design_pass.hpp"
+
+#include "design_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace railodd::geometry::fit {
+
+namespace {
+
+// Whether the design spends two or more knots between node i's neighbours.
+bool bent_to(const DesignPass& pass, std::size_t i) {
+    if (i == 0 || i + 1 >= pass.nodes.size() || pass.nodes[i].w == 0.0) {
+        return false;
+    }
+    const auto& el = pass.design.elements;
+    const double lo = std::min(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
+    const double hi = std::max(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
+    return std::count_if(el.begin() + 1, el.end(), [&](const FrameElement& e) { return e.s0 > lo && e.s0 < hi; }) >= 2;
+}
+
+// The structure searched again (design_dp) over the nodes from three before
+// node `first` to three after node `last`, tied to the design where that
+// window ends inside the chain, spliced in and refined over the whole chain:
+// the local search alone cannot leave a structure several elements deep.
+FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes, std::size_t first, std::size_t last) {
+    const std::size_t a = first > 3 ? first - 3 : 0, b = std::min(nodes.size() - 1, last + 3);
+    DesignDpOptions o = pass.options;
+    const auto& el = pass.design.elements;
+    const auto holding = [&](double t) {
+        return std::find_if(el.begin(), el.end() - 1, [&](const FrameElement& e) { return t <= e.s1; });
+    };
+    const double lo = a == 0 ? o.s0 : holding(nodes[a].t)->s0, hi = b + 1 == nodes.size() ? o.s1 : holding(nodes[b].t)->s1;
+    if (a > 0) {
+        o.start = design_state(pass.design, lo);
+    }
+    if (b + 1 < nodes.size()) {
+        o.end = design_state(pass.design, hi);
+    }
+    o.s0 = lo;
+    o.s1 = hi;
+    std::vector<FrameNode> window;
+    for (const FrameNode& n : nodes) {
+        if (n.t >= lo && n.t <= hi) {
+            window.push_back(n);
+        }
+    }
+    const FrameDesign local = design_dp(window, o);
+    std::vector<FrameElement> st;
+    for (FrameElement e : pass.design.elements) {
+        if (e.s0 < lo) {
+            e.s1 = std::min(e.s1, lo);
+            st.push_back(e);
+        }
+    }
+    st.insert(st.end(), local.elements.begin(), local.elements.end());
+    for (FrameElement e : pass.design.elements) {
+        if (e.s1 > hi) {
+            e.s0 = std::max(e.s0, hi);
+            st.push_back(e);
+        }
+    }
+    for (std::size_t j = 1; j < st.size(); ++j) {
+        if (!design::may_follow(st[j - 1].kind, st[j].kind)) {
+            return refine_structure(nodes, pass.design.elements, pass.options);
+        }
+    }
+    return refine_structure(nodes, st, pass.options);
+}
+
+// The pass with nodes `out` left out and `in` taken back, the structure
+// searched again locally; its cost counts one parameter for each node left
+// out (its own position) less one for each taken back.
+struct Reweighed {
+    std::vector<FrameNode> nodes;
+    FrameDesign design;
+    double cost = 0.0;
+};
+
+Reweighed reweighed(const DesignPass& pass, const std::vector<std::size_t>& out, const std::vector<std::size_t>& in) {
+    Reweighed r{pass.nodes, {}, 0.0};
+    for (const std::size_t i : out) {
+        r.nodes[i].w = 0.0;
+    }
+    for (const std::size_t i : in) {
+        r.nodes[i].w = 1.0 / (pass.sigma * pass.sigma);
+    }
+    std::size_t lo = r.nodes.size(), hi = 0;
+    for (const auto* v : {&out, &in}) {
+        for (const std::size_t i : *v) {
+            lo = std::min(lo, i);
+            hi = std::max(hi, i);
+        }
+    }
+    r.design = research(pass, r.nodes, lo, hi);
+    const double spent = static_cast<double>(out.size()) - static_cast<double>(in.size());
+    r.cost = r.design.cost + spent * pass.options.parameter_penalty;
+    return r;
+}
+
+// The pass takes the reweighed nodes and design.
+void take(DesignPass& pass, Reweighed&& r, std::vector<double>& weight) {
+    for (std::size_t i = 0; i < weight.size(); ++i) {
+        if ((r.nodes[i].w == 0.0) != (pass.nodes[i].w == 0.0)) {
+            weight[i] = r.nodes[i].w == 0.0 ? 0.0 : 1.0;
+        }
+    }
+    pass.nodes = std::move(r.nodes);
+    pass.design = std::move(r.design);
+    pass.distance.clear();
+    for (const double d : frame_residuals(pass.design, pass.nodes)) {
+        pass.distance.push_back(std::abs(d));
+    }
+}
+
+// Nodes `out` left out where that lowers the pass's cost.
+bool leave_out(DesignPass& pass, const std::vector<std::size_t>& out, std::vector<double>& weight) {
+    Reweighed r = reweighed(pass, out, {});
+    if (r.cost >= pass.design.cost) {
+        return false;
+    }
+    take(pass, std::move(r), weight);
+    return true;
+}
+
+// Left-out node i taken back, alone or in place of a kept node within two,
+// whichever costs least, where that costs less than leaving it out.
+bool take_back(DesignPass& pass, std::size_t i, std::vector<double>& weight) {
+    std::optional<Reweighed> best;
+    const auto offer = [&](Reweighed&& r) {
+        if (r.cost < (best ? best->cost : pass.design.cost)) {
+            best = std::move(r);
+        }
+    };
+    offer(reweighed(pass, {}, {i}));
+    for (std::size_t j = i > 2 ? i - 2 : 1; j + 1 < pass.nodes.size() && j <= i + 2; ++j) {
+        if (j != i && pass.nodes[j].w > 0.0) {
+            offer(reweighed(pass, {j}, {i}));
+        }
+    }
+    if (best) {
+        take(pass, std::move(*best), weight);
+    }
+    return best.has_value();
+}
+
+// Whether node i is one of the `reach` nodes next to a free end of the chain.
+bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach) {
+    return (!pass.options.start && i <= reach) || (!pass.options.end && i + reach + 1 >= pass.nodes.size());
+}
+
+// Which nodes the design follows, tested by model selection, each change
+// kept where the cost falls (reweigh), the structure searched again locally:
+// - nodes it bends to (bent_to): a stray node where nodes are sparse (across
+//   a long straight) is fitted exactly by a few short elements, and no
+//   residual shows it; left out alone or with the next such node within two
+//   (two strays a node apart bend the design together);
+// - nodes far off it yet kept (the robust weights keep a far node whose
+//   neighbour is far too: a stretch the design misses);
+// - near a free end, a left-out node is taken back, alone or in place of a
+//   kept one within two: nothing beyond the end tells which of two nodes
+//   strays, and the first passes may have followed the wrong one.
+// True where any changed.
+} // namespace
+
+bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
+    bool any = false;
+    const double far = 4.685 * pass.sigma;
+    const std::size_t n = pass.nodes.size();
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        if (pass.nodes[i].w == 0.0) {
+            any = (near_free_end(pass, i, 3) && pass.distance[i] > far && take_back(pass, i, weight)) || any;
+            continue;
+        }
+        const auto suspect = [&](std::size_t j) {
+            return j + 1 < n && pass.nodes[j].w > 0.0 && (bent_to(pass, j) || pass.distance[j] > far || near_free_end(pass, j, 3));
+        };
+        if (!bent_to(pass, i) && pass.distance[i] <= far) {
+            continue;
+        }
+        bool out = leave_out(pass, {i}, weight);
+        for (std::size_t j = i + 1; !out && j <= i + 2; ++j) {
+            out = suspect(j) && leave_out(pass, {i, j}, weight);
+        }
+        any = any || out;
+    }
+    if (any) {
+        pass.alignment = to_alignment(*pass.frame, pass.design);
+    }
+    return any;
+}
+
+} // namespace railodd::geometry::fit

@@ -1,0 +1,31 @@
+#pragma once
+// One pass of the design search over a chain (design_fit.cpp): the design in
+// the pass's frame, the nodes as developed and weighted there, and what the
+// pass was run with; and the test of which nodes it follows
+// (design_nodes.cpp).
+#include "design_dp.hpp"
+#include "reference_line.hpp"
+
+#include "railodd/geometry/alignment.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+struct DesignPass {
+    FrameDesign design;
+    Alignment alignment;
+    std::vector<double> distance; // of every node to the design, in the frame
+    std::vector<FrameNode> nodes; // in the pass's frame, weighted
+    DesignDpOptions options;
+    std::optional<ReferenceLine> frame;
+    double sigma = 0.0;
+};
+
+// Which nodes the design follows, settled by model selection (each change
+// kept where the pass's cost, one parameter per node left out, falls); the
+// pass and `weight` (per node: 0 left out) updated. True where any changed.
+bool settle_node_weights(DesignPass& pass, std::vector<double>& weight);
+
+} // namespace railodd::geometry::fit
