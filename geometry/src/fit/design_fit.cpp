@@ -213,7 +213,7 @@ FitResult polish(const DesignPass& pass, const std::vector<Point2>& p, const std
     so.abandon_loops = true;
     const auto& el = pass.design.elements;
     so.transition_prior.assign(el.size(), 0.0);
-    for (std::size_t j = 1; j + 1 < el.size(); ++j) {
+    for (std::size_t j = 1; j + 1 < so.transition_prior.size(); ++j) {
         so.transition_prior[j] = el[j].kind == ElementKind::transition ? transition_prior : 0.0;
     }
     const SolveReport r = solve(m, p, so);

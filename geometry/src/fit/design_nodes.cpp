@@ -120,6 +120,43 @@ void take(DesignPass& pass, Reweighed&& r, std::vector<double>& weight) {
     }
 }
 
+// Whether nodes [i, i + run) stand out as a spike (run 1) or a bump (run 2)
+// among the kept nodes: the line through them turns one way at each and the
+// other way at the kept nodes on either side (outlier_nodes.hpp's test, in
+// the frame). A node the design bends to through a curve does not: the line
+// turns one way throughout. No call with fewer than two kept nodes a side.
+bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run) {
+    std::vector<const FrameNode*> q;
+    for (std::size_t j = i, before = 0; j > 0 && before < 2;) {
+        if (pass.nodes[--j].w > 0.0) {
+            q.insert(q.begin(), &pass.nodes[j]);
+            ++before;
+        }
+    }
+    const std::size_t first = q.size();
+    for (std::size_t j = i, after = 0; j < pass.nodes.size() && after < 2; ++j) {
+        if (j < i + run || pass.nodes[j].w > 0.0) {
+            q.push_back(&pass.nodes[j]);
+            after += j < i + run ? 0 : 1;
+        }
+    }
+    if (first < 2 || q.size() < first + run + 2) {
+        return false;
+    }
+    const auto turn = [&](std::size_t k) {
+        const double a = (q[k]->z - q[k - 1]->z) / std::max(q[k]->t - q[k - 1]->t, 1e-6);
+        const double b = (q[k + 1]->z - q[k]->z) / std::max(q[k + 1]->t - q[k]->t, 1e-6);
+        return b - a;
+    };
+    const double here = turn(first);
+    for (std::size_t k = first + 1; k < first + run; ++k) {
+        if (here * turn(k) <= 0.0) {
+            return false;
+        }
+    }
+    return here * turn(first - 1) < 0.0 && here * turn(first + run) < 0.0;
+}
+
 // Nodes `out` left out where that lowers the pass's cost.
 bool leave_out(DesignPass& pass, const std::vector<std::size_t>& out, std::vector<double>& weight) {
     Reweighed r = reweighed(pass, out, {});
@@ -185,9 +222,12 @@ bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
         if (!bent_to(pass, i) && pass.distance[i] <= far) {
             continue;
         }
-        bool out = leave_out(pass, {i}, weight);
+        // Beside a free end no shape tells a stray from a curve's start: the
+        // cost alone decides there.
+        const bool judged = !near_free_end(pass, i, 1);
+        bool out = (!judged || stands_out(pass, i, 1)) && leave_out(pass, {i}, weight);
         for (std::size_t j = i + 1; !out && j <= i + 2; ++j) {
-            out = suspect(j) && leave_out(pass, {i, j}, weight);
+            out = suspect(j) && (stands_out(pass, i, j - i + 1) || stands_out(pass, i, 1)) && leave_out(pass, {i, j}, weight);
         }
         any = any || out;
     }
