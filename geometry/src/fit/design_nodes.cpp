@@ -157,15 +157,6 @@ bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run) {
     return here * turn(first - 1) < 0.0 && here * turn(first + run) < 0.0;
 }
 
-// Nodes `out` left out where that lowers the pass's cost.
-bool leave_out(DesignPass& pass, const std::vector<std::size_t>& out, std::vector<double>& weight) {
-    Reweighed r = reweighed(pass, out, {});
-    if (r.cost >= pass.design.cost) {
-        return false;
-    }
-    take(pass, std::move(r), weight);
-    return true;
-}
 
 // Left-out node i taken back, alone or in place of a kept node within two,
 // whichever costs least, where that costs less than leaving it out.
@@ -207,29 +198,61 @@ bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach) {
 // True where any changed.
 } // namespace
 
+namespace {
+
+// The ways of leaving out strays around node i, which the design bends to or
+// lies far from: i or either neighbour alone (the design may follow a stray
+// with no knot beside it and bend at the good node next to it), or i with
+// one of the next two. Away from a free end each must stand out from the
+// kept nodes: a spike alone, two side by side a bump, two a node apart each
+// a spike. Beside a free end no shape tells a stray from a curve's start:
+// the cost alone decides there.
+std::vector<std::vector<std::size_t>> stray_sets(const DesignPass& pass, std::size_t i, double far) {
+    const std::size_t n = pass.nodes.size();
+    const auto kept = [&](std::size_t j) { return j > 0 && j + 1 < n && pass.nodes[j].w > 0.0; };
+    const auto judged = [&](std::size_t j) { return !near_free_end(pass, j, 1); };
+    std::vector<std::vector<std::size_t>> sets;
+    for (const std::size_t j : {i - 1, i, i + 1}) {
+        if (kept(j) && (!judged(j) || stands_out(pass, j, 1))) {
+            sets.push_back({j});
+        }
+    }
+    for (std::size_t j = i + 1; j <= i + 2; ++j) {
+        const bool suspect = kept(j) && (bent_to(pass, j) || pass.distance[j] > far || near_free_end(pass, j, 3));
+        const bool pair = j == i + 1 ? stands_out(pass, i, 2) : stands_out(pass, i, 1) && stands_out(pass, j, 1);
+        if (suspect && (!judged(i) || pair)) {
+            sets.push_back({i, j});
+        }
+    }
+    return sets;
+}
+
+// The cheapest of `sets` left out, where it lowers the pass's cost.
+bool leave_out_best(DesignPass& pass, const std::vector<std::vector<std::size_t>>& sets, std::vector<double>& weight) {
+    std::optional<Reweighed> best;
+    for (const auto& out : sets) {
+        Reweighed r = reweighed(pass, out, {});
+        if (r.cost < (best ? best->cost : pass.design.cost)) {
+            best = std::move(r);
+        }
+    }
+    if (best) {
+        take(pass, std::move(*best), weight);
+    }
+    return best.has_value();
+}
+
+} // namespace
+
 bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
     bool any = false;
     const double far = 4.685 * pass.sigma;
-    const std::size_t n = pass.nodes.size();
-    for (std::size_t i = 1; i + 1 < n; ++i) {
+    for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
         if (pass.nodes[i].w == 0.0) {
             any = (near_free_end(pass, i, 3) && pass.distance[i] > far && take_back(pass, i, weight)) || any;
-            continue;
+        } else if (bent_to(pass, i) || pass.distance[i] > far) {
+            any = leave_out_best(pass, stray_sets(pass, i, far), weight) || any;
         }
-        const auto suspect = [&](std::size_t j) {
-            return j + 1 < n && pass.nodes[j].w > 0.0 && (bent_to(pass, j) || pass.distance[j] > far || near_free_end(pass, j, 3));
-        };
-        if (!bent_to(pass, i) && pass.distance[i] <= far) {
-            continue;
-        }
-        // Beside a free end no shape tells a stray from a curve's start: the
-        // cost alone decides there.
-        const bool judged = !near_free_end(pass, i, 1);
-        bool out = (!judged || stands_out(pass, i, 1)) && leave_out(pass, {i}, weight);
-        for (std::size_t j = i + 1; !out && j <= i + 2; ++j) {
-            out = suspect(j) && (stands_out(pass, i, j - i + 1) || stands_out(pass, i, 1)) && leave_out(pass, {i, j}, weight);
-        }
-        any = any || out;
     }
     if (any) {
         pass.alignment = to_alignment(*pass.frame, pass.design);
