@@ -9,7 +9,9 @@
 // C2 piecewise cubic z(t) whose curvature z'' is continuous and piecewise
 // linear: zero on a line, constant on an arc, linear on a transition.
 #include <cstddef>
+#include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace railodd::geometry::fit {
@@ -67,10 +69,13 @@ struct FrameDesign {
 double transition_length_for(double curvature);
 
 // Local search from a structure: knots moved, elements of another kind,
-// split or merged away while the exact cost falls (design_refine.cpp).
-// Nodes in any order.
+// split or merged away while the exact cost falls (design_refine.cpp), on
+// the elements that reach into `span` (chainages; all by default). Nodes in
+// any order.
 FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& structure,
-                             const DesignDpOptions& options);
+                             const DesignDpOptions& options,
+                             std::pair<double, double> span = {-std::numeric_limits<double>::infinity(),
+                                                               std::numeric_limits<double>::infinity()});
 
 // The nodes in order of chainage (stable: nodes at one chainage keep theirs).
 std::vector<FrameNode> by_chainage(std::vector<FrameNode> nodes);

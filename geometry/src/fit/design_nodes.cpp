@@ -52,6 +52,11 @@ FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes
             window.push_back(n);
         }
     }
+    if (window.empty() || !(hi > lo + 1.0)) {
+        // Nodes out of chainage order (a chain doubling back) can leave the
+        // window empty: no search there.
+        return refine_structure(nodes, pass.design.elements, pass.options, {lo, hi});
+    }
     const FrameDesign local = design_dp(window, o);
     std::vector<FrameElement> st;
     for (FrameElement e : pass.design.elements) {
@@ -69,10 +74,15 @@ FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes
     }
     for (std::size_t j = 1; j < st.size(); ++j) {
         if (!design::may_follow(st[j - 1].kind, st[j].kind)) {
-            return refine_structure(nodes, pass.design.elements, pass.options);
+            return refine_structure(nodes, pass.design.elements, pass.options, {lo, hi});
         }
     }
-    return refine_structure(nodes, st, pass.options);
+    // The refine reaches a window's length beyond it each way: far enough
+    // for the elements the new ones push against, and a long chain's refine
+    // stays local (a whole-chain refine per trial made Cologne's fit run
+    // for over ten minutes).
+    const double reach = hi - lo;
+    return refine_structure(nodes, st, pass.options, {lo - reach, hi + reach});
 }
 
 // The pass with nodes `out` left out and `in` taken back, the structure

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace railodd::geometry::fit {
 
@@ -24,7 +25,8 @@ struct Move {
 
 class Refiner {
 public:
-    Refiner(const std::vector<FrameNode>& n, const DesignDpOptions& o) : costs_(n, o), o_(o) {}
+    Refiner(const std::vector<FrameNode>& n, const DesignDpOptions& o, std::pair<double, double> span)
+        : costs_(n, o), o_(o), span_(span) {}
 
     // Runs rounds of moves until none lowers the cost; returns the structure.
     std::vector<FrameElement> run(std::vector<FrameElement> st) {
@@ -32,6 +34,9 @@ public:
         for (int round = 0; round < 8; ++round) {
             bool improved = false;
             for (std::size_t j = 0; j < st.size(); ++j) {
+                if (st[j].s1 < span_.first || st[j].s0 > span_.second) {
+                    continue;
+                }
                 Move best;
                 best.cost = costs_.cost() - 1e-9;
                 try_merges(st, j, best);
@@ -125,14 +130,15 @@ private:
 
     StructureCosts costs_;
     const DesignDpOptions& o_;
+    std::pair<double, double> span_;
 };
 
 } // namespace
 
 FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& structure,
-                             const DesignDpOptions& o) {
+                             const DesignDpOptions& o, std::pair<double, double> span) {
     const std::vector<FrameNode> sorted = by_chainage(nodes);
-    Refiner r(sorted, o);
+    Refiner r(sorted, o, span);
     return solve_structure(sorted, r.run(structure), o);
 }
 
