@@ -34,6 +34,7 @@ constexpr Key convert_keys[] = {
     {"feature_distance", "--feature-distance", Kind::number},
     {"station_distance", "--station-distance", Kind::number},
     {"estimate_cant", "--estimate-cant", Kind::flag},
+    {"strict", "--strict", Kind::flag},
     {"debug_outputs", "--debug-outputs", Kind::flag},
     {"odd_user_data", "--odd-user-data", Kind::flag},
     {"odr_version", "--odr-version", Kind::text},
@@ -53,7 +54,7 @@ constexpr Key scenario_keys[] = {
 
 const std::initializer_list<std::string_view> route_keys = {
     "id", "input", "scenarios", "bbox", "polygon", "relation", "field_mapping", "dem", "road_corridor",
-    "node_noise", "feature_distance", "station_distance", "estimate_cant", "debug_outputs", "odd_user_data",
+    "node_noise", "feature_distance", "station_distance", "estimate_cant", "strict", "debug_outputs", "odd_user_data",
     "odr_version", "taxonomy", "from", "to", "timeout"};
 const std::initializer_list<std::string_view> scenario_key_names = {
     "strategy", "count", "seed", "templates", "catalog", "max_anchors", "odd_spec", "osc_version", "target"};

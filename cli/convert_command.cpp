@@ -54,6 +54,8 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
         ->check(finite_range(0.0, 10000.0));
     app->add_option("--threads", opt_.threads, "Threads decoding PBF, fitting tracks and writing outputs (default: one per hardware thread; outputs do not depend on it)")
         ->check(unsigned_integer);
+    app->add_flag("--strict", opt_.strict,
+                  "Refuse the input (exit 2) where it would be repaired: a node id given twice at different locations");
     app->add_flag("--estimate-cant", opt_.estimate_cant,
                   "Estimate equilibrium cant from maxspeed and radius where railway:cant is not mapped (max 160 mm)");
     app->add_option("--odr-version", opt_.odr_version, "OpenDRIVE revision of map.xodr: 1.6, 1.7 or 1.8")
@@ -245,6 +247,29 @@ ingest::IngestResult read_input(const ConvertOptions& o) {
     return ingest::read_osm(o.input, io);
 }
 
+// A node id given twice at different locations (a careless merge): said on
+// stderr, the ids named, the first copy kept; refused with --strict.
+void check_duplicate_nodes(const ConvertOptions& o, const ingest::IngestResult& result) {
+    const std::size_t n = result.counts.duplicate_nodes;
+    if (n == 0) {
+        return;
+    }
+    std::string ids;
+    std::size_t named = 0;
+    for (const auto& r : result.repairs) {
+        if (r.kind == "node" && r.osm_type == "node" && named < 5) {
+            ids += (named++ ? ", " : "") + std::to_string(r.id);
+        }
+    }
+    const std::string what = std::to_string(n) + (n == 1 ? " node id occurs" : " node ids occur") +
+                             " again at another location (" + ids + (n > named ? ", ..." : "") + ")";
+    if (o.strict) {
+        throw InputError(o.input, what + "; refused with --strict");
+    }
+    std::cerr << "railodd: warning: " << o.input << ": " << what
+              << ": the first location of each is kept, the later ignored (report.json repairs)\n";
+}
+
 // report.json's sections of every stage, in pipeline order (the route's last,
 // when the profile follows one).
 nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const Geometry& geo,
@@ -268,6 +293,7 @@ nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const G
 int ConvertCommand::run() {
     // Phase 1: ingest the selected tracks, features and roads into the local frame.
     ingest::IngestResult result = read_input(opt_);
+    check_duplicate_nodes(opt_, result);
 
     // Phase 2: track graph, railway-grade centrelines and profiles, road
     // centrelines; then crossings, and features placed on the tracks.

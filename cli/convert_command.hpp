@@ -30,6 +30,7 @@ struct ConvertOptions {
     bool debug_outputs = false; // ingest.geojson, geometry.geojson, roads.geojson written
     bool odd_user_data = false; // every profile element also a <userData code="odd"> on its road in map.xodr
     bool estimate_cant = false; // equilibrium cant where railway:cant is not mapped
+    bool strict = false;        // input defects that are repaired otherwise (duplicate node ids) refuse the input
     std::string odr_version = "1.7";
     std::string taxonomy; // ODD taxonomy; empty: data/odd/railway_odd.yaml
     std::string from;     // --from/--to: odd_profile.* along the route between two stations

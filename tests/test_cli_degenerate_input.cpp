@@ -167,7 +167,27 @@ TEST(CliDegenerateInput, ANodeIdMetTwiceKeepsTheFirstAndSaysSo) {
     const auto c = convert(dir, osm_xml(nodes, {{10, refs}}));
     ASSERT_EQ(c.run.exit_code, 0) << c.run.output;
     EXPECT_NE(c.report["repairs"].dump().find("first location kept"), std::string::npos) << c.report["repairs"].dump();
+    EXPECT_EQ(c.report["input"]["duplicate_nodes"], 1);
+    // Said on stderr too, the id named (issue 40).
+    EXPECT_NE(c.run.output.find("warning: " + (dir / "in.osm").string() + ": 1 node id occurs again at another location (5)"),
+              std::string::npos)
+        << c.run.output;
     EXPECT_EQ(c.validate.exit_code, 0) << c.validate.output;
+}
+
+TEST(CliDegenerateInput, ANodeIdMetTwiceIsRefusedWithStrict) {
+    const fs::path dir = scratch_dir();
+    auto nodes = straight(1, 20, 48.0, 10.0);
+    nodes.push_back({5, 48.1, 10.0});
+    nodes.push_back({7, 48.2, 10.0});
+    std::vector<long long> refs;
+    for (int i = 1; i <= 20; ++i) refs.push_back(i);
+    write_file(dir / "in.osm", osm_xml(nodes, {{10, refs}}));
+    const auto r = run_railodd("convert " + quoted(dir / "in.osm") + " -o " + quoted(dir / "out") + " --strict");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find((dir / "in.osm").string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("2 node ids occur again at another location (5, 7)"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out" / "map.xodr"));
 }
 
 TEST(CliDegenerateInput, AFiftyThousandNodeZigZagConverts) {

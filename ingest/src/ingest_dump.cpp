@@ -163,6 +163,7 @@ ordered_json report_sections(const IngestResult& r) {
                   {"nodes", c.input_nodes},
                   {"track_nodes", c.input_track_nodes},
                   {"missing_track_nodes", c.missing_track_nodes},
+                  {"duplicate_nodes", c.duplicate_nodes},
                   {"land_use_areas", c.input_land_use}};
     j["output"] = {{"track_ways", c.output_track_ways},
                    {"clipped_track_ways", clipped},

@@ -165,6 +165,7 @@ NodeLocations wanted_nodes(const WayScan& ways) {
 }
 
 void add_duplicate_node_repairs(const NodeScan& nodes, IngestResult& result) {
+    result.counts.duplicate_nodes = nodes.duplicates.size();
     for (const auto& d : nodes.duplicates) {
         char at[64];
         std::snprintf(at, sizeof at, "%.7f, %.7f", d.ignored.lon, d.ignored.lat);

@@ -86,10 +86,12 @@ ojson input_json(const ojson& report) {
             opendrive[k] = v.size();
         }
     }
+    const ojson vertical = report.value("vertical", ojson::object());
     return {{"dropped", report.value("dropped", ojson::array()).size()},
             {"repairs", report.value("repairs", ojson::array()).size()},
             {"input", report.value("input", ojson::object())},
-            {"opendrive", std::move(opendrive)}};
+            {"opendrive", std::move(opendrive)},
+            {"elevation_sources", vertical.value("sources", ojson::object())}};
 }
 
 ojson meta_json(const ReportOptions& o, const odd::OddProfile& profile, const fs::path& play_file) {

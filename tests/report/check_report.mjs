@@ -105,6 +105,8 @@ function expectations(opts) {
     length: profile.route.length_m,
     levelCrossings: elements.filter((e) => e.id === 'sc.xing.level').length,
     scenarios: null,
+    // Heights from data (a DEM, mapped ele): else the page says so instead of a flat chart.
+    elevation: ['dem', 'osm_ele', 'interpolated'].some((k) => (report.vertical.sources[k] || 0) > 0),
   };
   if (opts.scenarios) {
     const man = JSON.parse(readFileSync(resolve(opts.scenarios) + '/manifest.json', 'utf8'));
@@ -125,6 +127,7 @@ function inspectPage() {
     chainParts: R.data.chains.length ? R.data.chains[0].parts.map((p) => p[0]) : [],
     charts: R.charts.map((u) => ({title: u.root.querySelector('.u-title') ?
       u.root.querySelector('.u-title').textContent : '', min: u.scales.x.min, max: u.scales.x.max})),
+    elevationNote: [...document.querySelectorAll('#charts-section .chart-note')].map((n) => n.textContent).join(' '),
   };
 }
 
@@ -198,6 +201,13 @@ function checkDrawn(exp, got, fail) {
   if (got.tracks !== exp.railRoads) fail(`track features ${got.tracks} != report.json rail_roads ${exp.railRoads}`);
   if (exp.xodrRailRoads !== exp.railRoads) fail(`map.xodr has ${exp.xodrRailRoads} rail roads, report.json says ${exp.railRoads}`);
   if (!got.charts.length) fail('no charts drawn');
+  const elevationChart = got.charts.some((c) => /^Elevation/.test(c.title));
+  if (exp.elevation !== elevationChart) {
+    fail(`elevation chart ${elevationChart ? 'drawn' : 'missing'}, report.json vertical sources ${exp.elevation ? 'with' : 'without'} data`);
+  }
+  if (!exp.elevation && !/no elevation data \(convert with --dem\)/.test(got.elevationNote)) {
+    fail(`no elevation data, but the page does not say so: "${got.elevationNote}"`);
+  }
   // The default chain is every track end to end (the route length) when the profile
   // has few tracks; on a network it is one long line, whose length is summed here from
   // the profile's own track lengths.

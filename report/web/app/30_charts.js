@@ -104,7 +104,19 @@
     };
   }
 
+  // Whether any track's heights come from data (a DEM or mapped `ele`): a map
+  // without is flat at 0 m, which is no elevation to draw.
+  function hasElevation(D) {
+    const src = (D.input || {}).elevation_sources || {};
+    return (src.dem || 0) + (src.osm_ele || 0) + (src.interpolated || 0) > 0;
+  }
+
   function elevationChart(D, C, target) {
+    if (!hasElevation(D)) {
+      target.classList.add('chart-note');
+      target.appendChild(el('p', {text: 'Elevation and gradient: no elevation data (convert with --dem)'}));
+      return null;
+    }
     const S = RA.chainSeries;
     const data = alignTable(C.length, [S.elevationSeries(D, C),
       S.stepSeries(D, C, 'sc.geo.vt.gradient', signedGradient(D, C))]);
@@ -156,6 +168,7 @@
       const div = el('div', {class: 'chart'});
       box.appendChild(div);
       const u = make(D, C, div);
+      if (!u) continue; // a note instead of a chart
       RA.charts.push(u);
       clickToMap(u, C, null);
     }

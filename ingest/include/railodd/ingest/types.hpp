@@ -101,6 +101,7 @@ struct IngestCounts {
     std::size_t output_road_ways = 0;
     std::size_t output_features = 0;
     std::size_t missing_track_nodes = 0;
+    std::size_t duplicate_nodes = 0; // later copies of a node id at another location, ignored (repairs lists them)
     std::size_t input_land_use = 0;  // land-use ways and multipolygons read
     std::size_t output_land_use = 0; // of those, assembled and near the tracks
 };
