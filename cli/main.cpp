@@ -9,6 +9,7 @@
 #include "sample_command.hpp"
 #include "scenarios_command.hpp"
 #include "validate_command.hpp"
+#include "crop_command.hpp"
 
 #include "railodd/util/errors.hpp"
 
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
     std::vector<std::unique_ptr<cli::Command>> commands;
     commands.push_back(std::make_unique<cli::BatchCommand>());
     commands.push_back(std::make_unique<cli::ConvertCommand>());
+    commands.push_back(std::make_unique<cli::CropCommand>());
     commands.push_back(std::make_unique<cli::MergeCommand>());
     commands.push_back(std::make_unique<cli::PlayCommand>());
     commands.push_back(std::make_unique<cli::ProfileCommand>());
