@@ -49,7 +49,7 @@ constexpr Key scenario_keys[] = {
     {"seed", "--seed", Kind::integer},            {"templates", "--templates", Kind::path},
     {"catalog", "--catalog", Kind::path},         {"max_anchors", "--max-anchors", Kind::integer},
     {"odd_spec", "--odd-spec", Kind::path},       {"osc_version", "--osc-version", Kind::text},
-    {"target", "--target", Kind::text},
+    {"target", "--target", Kind::text},           {"map_corridor", "--map-corridor", Kind::number},
 };
 
 const std::initializer_list<std::string_view> route_keys = {
@@ -57,7 +57,8 @@ const std::initializer_list<std::string_view> route_keys = {
     "node_noise", "feature_distance", "station_distance", "estimate_cant", "strict", "debug_outputs", "odd_user_data",
     "odr_version", "taxonomy", "from", "to", "timeout"};
 const std::initializer_list<std::string_view> scenario_key_names = {
-    "strategy", "count", "seed", "templates", "catalog", "max_anchors", "odd_spec", "osc_version", "target"};
+    "strategy", "count", "seed", "templates", "catalog", "max_anchors", "odd_spec", "osc_version", "target",
+    "map_corridor"};
 
 using Options = std::vector<std::pair<std::string, std::vector<std::string>>>;
 

@@ -1,4 +1,5 @@
 #include "scenarios_command.hpp"
+#include "scenario_maps.hpp"
 #include "option_checks.hpp"
 
 #include "railodd/odd/odd_spec.hpp"
@@ -144,6 +145,10 @@ CLI::App* ScenariosCommand::add(CLI::App& parent) {
     app->add_option("--target", opt_.target,
                     "Player: esmini, or carla (ScenarioRunner: OpenSCENARIO 1.0, only what it supports)")
         ->capture_default_str();
+    app->add_option("--map-corridor", opt_.map_corridor_m,
+                    "Give each scenario a map cut to the roads within METERS of its route (0: the whole map; "
+                    "default: 200 for maps over 5 MB, else 0)")
+        ->check(finite_range(0.0, 100000.0));
     app->add_flag("-q,--quiet", opt_.quiet, "Do not print the coverage table");
     return app;
 }
@@ -215,7 +220,10 @@ int ScenariosCommand::run() {
     gen.map_file = fs::absolute(xodr).lexically_normal().lexically_relative(out).generic_string();
     gen.date = date;
     gen.target = target_;
-    const scenario::Generation generation = scenario::generate(profile, templates, catalog, taxonomy, gen);
+    scenario::Generation generation = scenario::generate(profile, templates, catalog, taxonomy, gen);
+    if (const double corridor = corridor_for(opt_.map_corridor_m, xodr); corridor > 0.0) {
+        cut_scenario_maps(stage, xodr, corridor, generation);
+    }
 
     // Coverage of the route's ODD (and the declared one)
     const scenario::Coverage coverage =

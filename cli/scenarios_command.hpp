@@ -27,6 +27,7 @@ struct ScenariosOptions {
     std::string osc_version;      // empty: the target's (1.2 for esmini, 1.0 for carla)
     std::string target = "esmini"; // esmini or carla (ScenarioRunner)
     bool quiet = false;
+    double map_corridor_m = -1.0; // < 0: 200 m for maps over 5 MB, else the whole map (scenario_maps.hpp)
 };
 
 class ScenariosCommand : public Command {

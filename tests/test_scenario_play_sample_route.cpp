@@ -9,6 +9,10 @@
 
 #include <unistd.h>
 
+#include <set>
+#include <string>
+#include <vector>
+
 using namespace railodd::test;
 using json = nlohmann::json;
 
@@ -191,4 +195,46 @@ TEST(ScenarioPlaySharedExtract, ARandomSampleOfLiechtensteinPlays) {
     const json cover = read_json(dir / "cover" / "coverage.json");
     EXPECT_GE(cover["route"]["ratio"].get<double>(), 0.95) << cover["gaps"].dump(1);
     EXPECT_LE(3 * cover["selection"]["scenarios"].get<int>(), cover["selection"]["pairwise_scenarios"].get<int>());
+}
+
+// Maps cut to each scenario's corridor (issue 40): one per distinct set of
+// roads, each holding every road the scenario's actors use, named by the
+// .xosc and the manifest alike, valid, and every scenario still passes in
+// esmini on its cut map. Without the option a map this small stays whole.
+TEST_F(ScenarioPlaySampleRoute, CorridorMapsHoldEveryRoadAndPlay) {
+    REQUIRE_PLAYER();
+    const fs::path set = root() / "corridor";
+    const std::string gen = "scenarios --map " + quoted(root() / "map") + " --strategy random --count 1 --seed 5 -q -o ";
+    ASSERT_EQ(run_railodd(gen + quoted(set) + " --map-corridor 150").exit_code, 0);
+    const json manifest = read_json(set / "manifest.json");
+    std::set<std::string> maps;
+    for (const auto& s : manifest["scenarios"]) {
+        const std::string map = s["map"];
+        maps.insert(map);
+        EXPECT_EQ(map.rfind("maps/corridor_", 0), 0u) << map;
+        const std::string xosc = read_file(set / s["file"].get<std::string>());
+        EXPECT_NE(xosc.find("LogicFile filepath=\"" + map + "\""), std::string::npos) << s["id"];
+        const std::string xodr = read_file(set / map);
+        std::vector<std::string> roads = s["ego"]["route_roads"].get<std::vector<std::string>>();
+        for (const auto& a : s["actors"]) {
+            roads.push_back(a["start"]["road_id"]);
+            if (a.contains("target")) roads.push_back(a["target"]["road_id"]);
+        }
+        for (const auto& id : roads) {
+            EXPECT_NE(xodr.find("id=\"" + id + "\" junction="), std::string::npos) << s["id"] << ": road " << id << " not in " << map;
+        }
+    }
+    EXPECT_LT(maps.size(), manifest["scenarios"].size()); // shared where the roads are the same
+    for (const auto& m : maps) {
+        const auto v = run_railodd("validate " + quoted(set / m));
+        EXPECT_EQ(v.exit_code, 0) << m << "\n" << v.output;
+    }
+    const auto r = run_railodd(play_args(set));
+    EXPECT_EQ(r.exit_code, 0) << r.output << read_file(set / "play.txt");
+    expect_all_pass(read_json(set / "play.json"));
+    const fs::path whole = root() / "whole";
+    ASSERT_EQ(run_railodd(gen + quoted(whole)).exit_code, 0);
+    for (const auto& s : read_json(whole / "manifest.json")["scenarios"]) {
+        EXPECT_EQ(s["map"], "../map/map.xodr");
+    }
 }

@@ -61,13 +61,13 @@ void actor(YAML::Emitter& y, const Actor& a, double trigger) {
 
 } // namespace
 
-std::string behavior_yaml(const ScenarioRecord& rec, const odd::OddProfile& profile, const OutputInfo& info) {
+std::string behavior_yaml(const ScenarioRecord& rec, const odd::OddProfile& profile) {
     const ConcreteScenario& sc = rec.scenario;
     YAML::Emitter y;
     y << YAML::BeginMap;
     y << YAML::Key << "format" << YAML::Value << "railodd-behavior" << YAML::Key << "format_version" << YAML::Value << 1;
     y << YAML::Key << "scenario" << YAML::Value << sc.id << YAML::Key << "scenario_file" << YAML::Value
-      << sc.id + ".xosc" << YAML::Key << "map" << YAML::Value << info.map_file;
+      << sc.id + ".xosc" << YAML::Key << "map" << YAML::Value << sc.map_file;
     y << YAML::Key << "ego" << YAML::Value << YAML::BeginMap << YAML::Key << "entity" << YAML::Value << "Ego"
       << YAML::Key << "asset" << YAML::Value << sc.ego.asset_id << YAML::Key << "speed_mps" << YAML::Value
       << num(sc.ego.speed_mps) << YAML::Key << "max_deceleration_mps2" << YAML::Value << num(sc.ego.max_deceleration);

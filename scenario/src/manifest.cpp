@@ -85,7 +85,7 @@ ojson route_roads(const Actor& ego) {
     return roads;
 }
 
-ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile, const OutputInfo& info) {
+ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile) {
     const ConcreteScenario& sc = rec.scenario;
     ojson params = ojson::object();
     for (std::size_t i = 0; i < rec.values.size(); ++i) {
@@ -131,7 +131,7 @@ ojson scenario_json(const ScenarioRecord& rec, const odd::OddProfile& profile, c
             {"assets", std::move(assets)},
             {"perturbations", std::move(perturbations)},
             {"odd_elements", std::move(covered)},
-            {"map", info.map_file}};
+            {"map", sc.map_file}};
 }
 
 ojson degraded_json(const std::vector<Degradation>& list) {
@@ -169,7 +169,7 @@ ojson manifest_json(const Generation& g, const odd::OddProfile& profile, const O
     j["templates"] = std::move(templates);
     ojson scenarios = ojson::array();
     for (const auto& s : g.scenarios) {
-        scenarios.push_back(scenario_json(s, profile, info));
+        scenarios.push_back(scenario_json(s, profile));
         if (info.target != Target::esmini) {
             const auto it = degraded.find(s.scenario.id);
             scenarios.back()["degraded_for_target"] =

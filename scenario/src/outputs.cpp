@@ -40,7 +40,7 @@ void write_scenario_set(OutputStage& stage, const Generation& g, const Coverage&
         XoscDocument doc = xosc_document(s.scenario, opt);
         stage.write_text(s.scenario.id + ".xosc", doc.text);
         degraded[s.scenario.id] = std::move(doc.degraded_for_target);
-        stage.write_text(s.scenario.id + ".behavior.yaml", behavior_yaml(s, profile, info));
+        stage.write_text(s.scenario.id + ".behavior.yaml", behavior_yaml(s, profile));
     }
     for (const auto kind : {Actor::Kind::vehicle, Actor::Kind::pedestrian, Actor::Kind::misc_object}) {
         std::vector<Actor> entries;

@@ -46,7 +46,7 @@ nlohmann::ordered_json manifest_json(const Generation& g, const odd::OddProfile&
 
 // ID.behavior.yaml (format railodd-behavior 1): the motions OpenSCENARIO
 // players handle poorly, for a custom controller.
-std::string behavior_yaml(const ScenarioRecord& rec, const odd::OddProfile& profile, const OutputInfo& info);
+std::string behavior_yaml(const ScenarioRecord& rec, const odd::OddProfile& profile);
 
 // Whether the set has distributions/TEMPLATE.xosc: OpenSCENARIO 1.1 and later.
 bool has_distributions(const OutputInfo& info);
