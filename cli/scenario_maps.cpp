@@ -50,6 +50,7 @@ double corridor_for(double requested, const std::filesystem::path& map) {
 
 void cut_scenario_maps(OutputStage& stage, const std::filesystem::path& map, double corridor_m,
                        scenario::Generation& generation) {
+    const xodr_check::MapCrop crop(map);
     std::map<std::set<std::string>, std::string> cut;
     for (auto& rec : generation.scenarios) {
         const std::set<std::string> roads = scenario_roads(rec.scenario);
@@ -59,7 +60,7 @@ void cut_scenario_maps(OutputStage& stage, const std::filesystem::path& map, dou
             spec.roads.assign(roads.begin(), roads.end());
             spec.corridor_m = corridor_m;
             const std::string name = "maps/corridor_" + std::to_string(cut.size() + 1) + ".xodr";
-            stage.write_text(name, xodr_check::crop_map(map, spec).xml);
+            stage.write_text(name, crop.cut(spec).xml);
             it = cut.emplace(roads, name).first;
         }
         rec.scenario.map_file = it->second;

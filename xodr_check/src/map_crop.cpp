@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -20,9 +22,11 @@ namespace {
 
 constexpr double sample_step_m = 5.0;
 
+using Samples = std::vector<std::pair<double, double>>;
+
 // Points along a road's reference line, every sample_step_m and at its ends.
-std::vector<std::pair<double, double>> samples(const MapRoad& r) {
-    std::vector<std::pair<double, double>> out;
+Samples sample_road(const MapRoad& r) {
+    Samples out;
     const auto n = static_cast<std::size_t>(std::ceil(r.length / sample_step_m));
     for (std::size_t i = 0; i <= n; ++i) {
         const Pose p = r.pose(std::min(r.length, static_cast<double>(i) * sample_step_m));
@@ -64,45 +68,42 @@ private:
     std::unordered_map<std::uint64_t, std::vector<std::pair<double, double>>> cells_;
 };
 
-bool in_box(const MapRoad& r, const CropSpec::Box& b) {
-    for (const auto& [x, y] : samples(r)) {
-        if (x >= b.xmin && x <= b.xmax && y >= b.ymin && y <= b.ymax) {
-            return true;
-        }
-    }
-    return false;
+bool in_box(const Samples& s, const CropSpec::Box& b) {
+    return std::any_of(s.begin(), s.end(), [&](const auto& p) {
+        return p.first >= b.xmin && p.first <= b.xmax && p.second >= b.ymin && p.second <= b.ymax;
+    });
 }
 
-// The roads the spec names or boxes, and those within its corridor.
-std::set<std::string> chosen_roads(const std::filesystem::path& file, const MapLines& lines, const CropSpec& spec) {
+// The roads the spec names or boxes, and those within its corridor (`ids`
+// and `samples` per road, in document order).
+std::set<std::string> chosen_roads(const std::filesystem::path& file, const std::vector<std::string>& ids,
+                                   const std::vector<Samples>& samples, const CropSpec& spec) {
     std::set<std::string> chosen;
-    std::set<std::string> known;
-    for (const MapRoad& r : lines.roads) {
-        known.insert(r.id);
-        if (spec.box && in_box(r, *spec.box)) {
-            chosen.insert(r.id);
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        if (spec.box && in_box(samples[k], *spec.box)) {
+            chosen.insert(ids[k]);
         }
     }
     for (const std::string& id : spec.roads) {
-        if (!known.count(id)) {
+        if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
             throw InputError(file.string(), "road " + id + " is not in the map");
         }
         chosen.insert(id);
     }
     if (spec.corridor_m > 0.0) {
         Corridor c(spec.corridor_m);
-        for (const MapRoad& r : lines.roads) {
-            if (chosen.count(r.id)) {
-                for (const auto& [x, y] : samples(r)) {
+        for (std::size_t k = 0; k < ids.size(); ++k) {
+            if (chosen.count(ids[k])) {
+                for (const auto& [x, y] : samples[k]) {
                     c.add(x, y);
                 }
             }
         }
         std::set<std::string> near = chosen;
-        for (const MapRoad& r : lines.roads) {
-            const auto s = samples(r);
+        for (std::size_t k = 0; k < ids.size(); ++k) {
+            const Samples& s = samples[k];
             if (std::any_of(s.begin(), s.end(), [&](const auto& p) { return c.near(p.first, p.second, spec.corridor_m); })) {
-                near.insert(r.id);
+                near.insert(ids[k]);
             }
         }
         chosen = std::move(near);
@@ -128,10 +129,6 @@ void keep_connecting_roads(const pugi::xml_node& root, std::set<std::string>& ke
         }
     }
 }
-
-} // namespace
-
-namespace {
 
 template <typename Pred>
 std::size_t remove_children(pugi::xml_node parent, const char* name, Pred gone) {
@@ -254,17 +251,39 @@ void prune_references(pugi::xml_node root) {
 
 } // namespace
 
-CropResult crop_map(const std::filesystem::path& file, const CropSpec& spec) {
-    const MapLines lines = read_map_lines(file);
-    std::set<std::string> keep = chosen_roads(file, lines, spec);
-    pugi::xml_document doc;
-    if (!doc.load_file(file.c_str())) {
+struct MapCrop::Map {
+    std::filesystem::path file;
+    std::string text; // parsed again per cut: pugixml parses faster than it copies a document
+    std::vector<std::string> ids;  // of the roads, in document order
+    std::vector<Samples> samples;  // per road
+};
+
+MapCrop::MapCrop(const std::filesystem::path& file) {
+    auto m = std::make_unique<Map>();
+    m->file = file;
+    for (const MapRoad& r : read_map_lines(file).roads) {
+        m->ids.push_back(r.id);
+        m->samples.push_back(sample_road(r));
+    }
+    std::ifstream in(file, std::ios::binary);
+    m->text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    pugi::xml_document probe;
+    if (!in || !probe.load_buffer(m->text.data(), m->text.size())) {
         throw InputError(file.string(), "cannot be read as XML");
     }
+    map_ = std::move(m);
+}
+
+MapCrop::~MapCrop() = default;
+
+CropResult MapCrop::cut(const CropSpec& spec) const {
+    std::set<std::string> keep = chosen_roads(map_->file, map_->ids, map_->samples, spec);
+    pugi::xml_document doc;
+    doc.load_buffer(map_->text.data(), map_->text.size());
     pugi::xml_node root = doc.child("OpenDRIVE");
     keep_connecting_roads(root, keep);
     CropResult r;
-    r.roads_in = lines.roads.size();
+    r.roads_in = map_->ids.size();
     remove_children(root, "road", [&](const pugi::xml_node& road) { return !keep.count(road.attribute("id").as_string()); });
     const std::set<std::string> junctions = prune_junctions(root, keep, r);
     for (pugi::xml_node road : root.children("road")) {
@@ -274,7 +293,7 @@ CropResult crop_map(const std::filesystem::path& file, const CropSpec& spec) {
     prune_rail(root, keep);
     prune_references(root);
     if (r.roads_kept == 0) {
-        throw InputError(file.string(), "the selection keeps no road of the map");
+        throw InputError(map_->file.string(), "the selection keeps no road of the map");
     }
     r.junctions_kept = junctions.size();
     std::ostringstream os;
@@ -282,5 +301,7 @@ CropResult crop_map(const std::filesystem::path& file, const CropSpec& spec) {
     r.xml = os.str();
     return r;
 }
+
+CropResult crop_map(const std::filesystem::path& file, const CropSpec& spec) { return MapCrop(file).cut(spec); }
 
 } // namespace railodd::xodr_check

@@ -24,7 +24,6 @@ constexpr double penalty_per_log_node = 1.5;
 constexpr double curvature_weight = 300.0;
 constexpr double transition_prior = 3.0;
 
-
 // The parameters the design spent on the nodes: the start state and each
 // element's length, a transition's slope besides.
 std::size_t parameters(const FrameDesign& d) {
@@ -60,7 +59,7 @@ double residual_sigma(const DesignPass& pass, const std::vector<double>& weight,
 // far too is kept whole: a stretch the design misses is the structure's
 // fault, not the nodes'.
 std::vector<double> robust_weights(const std::vector<double>& d, double sigma) {
-    const double c = 4.685 * sigma;
+    const double c = biweight_cut * sigma;
     std::vector<double> w(d.size(), 1.0);
     for (std::size_t i = 0; i < d.size(); ++i) {
         const bool far = d[i] > c;
@@ -85,7 +84,7 @@ void screen_spikes(const ReferenceLine& smooth, const std::vector<Point2>& p, st
     for (const FrameNode& n : develop(smooth, p)) {
         off.push_back(std::abs(n.z - smooth.developed(n.t)));
     }
-    const std::vector<double> w = robust_weights(off, spike_m / 4.685);
+    const std::vector<double> w = robust_weights(off, spike_m / biweight_cut);
     for (std::size_t i = 0; i < weight.size(); ++i) {
         weight[i] = w[i] == 0.0 ? 0.0 : weight[i];
     }
@@ -144,13 +143,11 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     DesignPass pass;
     pass.design = seed.empty() ? design_dp(nodes, o) : refine_structure(nodes, seed, o);
     pass.alignment = to_alignment(ref, pass.design);
-    for (const double r : frame_residuals(pass.design, nodes)) {
-        pass.distance.push_back(std::abs(r));
-    }
     pass.nodes = std::move(nodes);
     pass.options = o;
     pass.frame = ref;
     pass.sigma = sigma;
+    pass.measure();
     return pass;
 }
 

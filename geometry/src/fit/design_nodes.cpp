@@ -2,8 +2,8 @@
 // stray node the design bent to, a far node kept, a left-out node near a
 // free end that was the good one of two. Each is a model choice, made by
 // cost: the structure searched again over a window of nodes around it
-// (design_dp), spliced in and refined over the chain, with one parameter
-// for each node left out (its own position).
+// (design_dp), spliced in and refined nearby, with one parameter for each
+// node left out (its own position).
 #include "design_pass.hpp"
 
 #include "design_rules.hpp"
@@ -28,8 +28,9 @@ bool bent_to(const DesignPass& pass, std::size_t i) {
 
 // The structure searched again (design_dp) over the nodes from three before
 // node `first` to three after node `last`, tied to the design where that
-// window ends inside the chain, spliced in and refined over the whole chain:
-// the local search alone cannot leave a structure several elements deep.
+// window ends inside the chain, spliced in and refined within a window's
+// length each way: the local search alone cannot leave a structure several
+// elements deep.
 FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes, std::size_t first, std::size_t last) {
     const std::size_t a = first > 3 ? first - 3 : 0, b = std::min(nodes.size() - 1, last + 3);
     DesignDpOptions o = pass.options;
@@ -124,10 +125,27 @@ void take(DesignPass& pass, Reweighed&& r, std::vector<double>& weight) {
     }
     pass.nodes = std::move(r.nodes);
     pass.design = std::move(r.design);
-    pass.distance.clear();
-    for (const double d : frame_residuals(pass.design, pass.nodes)) {
-        pass.distance.push_back(std::abs(d));
+    pass.measure();
+}
+
+// Node sets left out and taken back.
+struct Trial {
+    std::vector<std::size_t> out, in;
+};
+
+// The cheapest of the trials, where it costs less than the pass as it is.
+bool take_cheapest(DesignPass& pass, const std::vector<Trial>& trials, std::vector<double>& weight) {
+    std::optional<Reweighed> best;
+    for (const Trial& t : trials) {
+        Reweighed r = reweighed(pass, t.out, t.in);
+        if (r.cost < (best ? best->cost : pass.design.cost)) {
+            best = std::move(r);
+        }
     }
+    if (best) {
+        take(pass, std::move(*best), weight);
+    }
+    return best.has_value();
 }
 
 // Whether nodes [i, i + run) stand out as a spike (run 1) or a bump (run 2)
@@ -167,48 +185,21 @@ bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run) {
     return here * turn(first - 1) < 0.0 && here * turn(first + run) < 0.0;
 }
 
-
-// Left-out node i taken back, alone or in place of a kept node within two,
-// whichever costs least, where that costs less than leaving it out.
-bool take_back(DesignPass& pass, std::size_t i, std::vector<double>& weight) {
-    std::optional<Reweighed> best;
-    const auto offer = [&](Reweighed&& r) {
-        if (r.cost < (best ? best->cost : pass.design.cost)) {
-            best = std::move(r);
-        }
-    };
-    offer(reweighed(pass, {}, {i}));
+// Left-out node i taken back, alone or in place of a kept node within two.
+std::vector<Trial> take_back_trials(const DesignPass& pass, std::size_t i) {
+    std::vector<Trial> trials{{{}, {i}}};
     for (std::size_t j = i > 2 ? i - 2 : 1; j + 1 < pass.nodes.size() && j <= i + 2; ++j) {
         if (j != i && pass.nodes[j].w > 0.0) {
-            offer(reweighed(pass, {j}, {i}));
+            trials.push_back({{j}, {i}});
         }
     }
-    if (best) {
-        take(pass, std::move(*best), weight);
-    }
-    return best.has_value();
+    return trials;
 }
 
 // Whether node i is one of the `reach` nodes next to a free end of the chain.
 bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach) {
     return (!pass.options.start && i <= reach) || (!pass.options.end && i + reach + 1 >= pass.nodes.size());
 }
-
-// Which nodes the design follows, tested by model selection, each change
-// kept where the cost falls (reweigh), the structure searched again locally:
-// - nodes it bends to (bent_to): a stray node where nodes are sparse (across
-//   a long straight) is fitted exactly by a few short elements, and no
-//   residual shows it; left out alone or with the next such node within two
-//   (two strays a node apart bend the design together);
-// - nodes far off it yet kept (the robust weights keep a far node whose
-//   neighbour is far too: a stretch the design misses);
-// - near a free end, a left-out node is taken back, alone or in place of a
-//   kept one within two: nothing beyond the end tells which of two nodes
-//   strays, and the first passes may have followed the wrong one.
-// True where any changed.
-} // namespace
-
-namespace {
 
 // The ways of leaving out strays around node i, which the design bends to or
 // lies far from: i or either neighbour alone (the design may follow a stray
@@ -217,57 +208,60 @@ namespace {
 // kept nodes: a spike alone, two side by side a bump, two a node apart each
 // a spike. Beside a free end no shape tells a stray from a curve's start:
 // the cost alone decides there.
-std::vector<std::vector<std::size_t>> stray_sets(const DesignPass& pass, std::size_t i, double far) {
+std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double far) {
     const std::size_t n = pass.nodes.size();
     const auto kept = [&](std::size_t j) { return j > 0 && j + 1 < n && pass.nodes[j].w > 0.0; };
     const auto judged = [&](std::size_t j) { return !near_free_end(pass, j, 1); };
-    std::vector<std::vector<std::size_t>> sets;
+    std::vector<Trial> trials;
     for (const std::size_t j : {i - 1, i, i + 1}) {
         if (kept(j) && (!judged(j) || stands_out(pass, j, 1))) {
-            sets.push_back({j});
+            trials.push_back({{j}, {}});
         }
     }
     for (std::size_t j = i + 1; j <= i + 2; ++j) {
         const bool suspect = kept(j) && (bent_to(pass, j) || pass.distance[j] > far || near_free_end(pass, j, 3));
         const bool pair = j == i + 1 ? stands_out(pass, i, 2) : stands_out(pass, i, 1) && stands_out(pass, j, 1);
         if (suspect && (!judged(i) || pair)) {
-            sets.push_back({i, j});
+            trials.push_back({{i, j}, {}});
         }
     }
-    return sets;
-}
-
-// The cheapest of `sets` left out, where it lowers the pass's cost.
-bool leave_out_best(DesignPass& pass, const std::vector<std::vector<std::size_t>>& sets, std::vector<double>& weight) {
-    std::optional<Reweighed> best;
-    for (const auto& out : sets) {
-        Reweighed r = reweighed(pass, out, {});
-        if (r.cost < (best ? best->cost : pass.design.cost)) {
-            best = std::move(r);
-        }
-    }
-    if (best) {
-        take(pass, std::move(*best), weight);
-    }
-    return best.has_value();
+    return trials;
 }
 
 } // namespace
 
+// Which nodes the design follows, tested by model selection, each change
+// kept where the cost falls (take_cheapest):
+// - nodes it bends to (bent_to): a stray node where nodes are sparse (across
+//   a long straight) is fitted exactly by a few short elements, and no
+//   residual shows it;
+// - nodes far off it yet kept (the robust weights keep a far node whose
+//   neighbour is far too: a stretch the design misses);
+// for both, the strays around them (stray_trials);
+// - near a free end, a left-out node is taken back, alone or in place of a
+//   kept one within two: nothing beyond the end tells which of two nodes
+//   strays, and the first passes may have followed the wrong one.
 bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
     bool any = false;
-    const double far = 4.685 * pass.sigma;
+    const double far = biweight_cut * pass.sigma;
     for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
         if (pass.nodes[i].w == 0.0) {
-            any = (near_free_end(pass, i, 3) && pass.distance[i] > far && take_back(pass, i, weight)) || any;
+            any = (near_free_end(pass, i, 3) && pass.distance[i] > far && take_cheapest(pass, take_back_trials(pass, i), weight)) || any;
         } else if (bent_to(pass, i) || pass.distance[i] > far) {
-            any = leave_out_best(pass, stray_sets(pass, i, far), weight) || any;
+            any = take_cheapest(pass, stray_trials(pass, i, far), weight) || any;
         }
     }
     if (any) {
         pass.alignment = to_alignment(*pass.frame, pass.design);
     }
     return any;
+}
+
+void DesignPass::measure() {
+    distance.clear();
+    for (const double d : frame_residuals(design, nodes)) {
+        distance.push_back(std::abs(d));
+    }
 }
 
 } // namespace railodd::geometry::fit

@@ -13,6 +13,11 @@
 
 namespace railodd::geometry::fit {
 
+// Tukey's biweight cut, in units of the noise: a node further off the
+// design than this many sigma is far (left out of the robust weights,
+// suspect to the node tests).
+constexpr double biweight_cut = 4.685;
+
 struct DesignPass {
     FrameDesign design;
     Alignment alignment;
@@ -21,6 +26,9 @@ struct DesignPass {
     DesignDpOptions options;
     std::optional<ReferenceLine> frame;
     double sigma = 0.0;
+
+    // `distance` measured again after the design or the nodes changed.
+    void measure();
 };
 
 // Which nodes the design follows, settled by model selection (each change

@@ -9,6 +9,7 @@
 // survives.
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,8 +34,24 @@ struct CropResult {
     std::size_t connections_dropped = 0; // junction connections whose roads are gone
 };
 
-// Throws railodd::InputError naming the file for an unreadable map, an
-// unknown road id or a selection that keeps no road.
+// A map read once and cut as often as asked (a scenario set cuts one map per
+// distinct set of roads). Throws railodd::InputError naming the file for an
+// unreadable map; cut() for an unknown road id or a selection that keeps no
+// road.
+class MapCrop {
+public:
+    explicit MapCrop(const std::filesystem::path& file);
+    ~MapCrop();
+    MapCrop(const MapCrop&) = delete;
+    MapCrop& operator=(const MapCrop&) = delete;
+    CropResult cut(const CropSpec& spec) const;
+
+private:
+    struct Map; // the parsed document and each road's samples (map_crop.cpp)
+    std::unique_ptr<const Map> map_;
+};
+
+// MapCrop(file).cut(spec).
 CropResult crop_map(const std::filesystem::path& file, const CropSpec& spec);
 
 } // namespace railodd::xodr_check
