@@ -2,11 +2,12 @@
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
 // [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing
-// osm|dense|sparse] [--method windowed|design] (defaults: 300 routes from
+// osm|dense|sparse] [--method windowed|design] [--tied] (defaults: 300 routes from
 // seed 1000, sigma 0.1 0.3 1.0, 1 % outliers, OSM-like node spacing
 // (alignment_truth.hpp), the windowed fit; --worst lists the
 // N worst routes and arcs; --bound
-// adds each arc's Cramer-Rao bound, design_crlb.hpp). Prints, per sigma, the
+// adds each arc's Cramer-Rao bound, design_crlb.hpp; --tied ties both
+// ends to the design's poses, as switches tie a chain). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
 // design arc, elements against the design and spurious curvature sign
 // changes: the figures issue 18's targets are stated in.
@@ -61,7 +62,13 @@ struct Options {
     int first = 1000; // seed of the first route
     truth::Spacing spacing = truth::Spacing::osm;
     geometry::FitMethod method = geometry::FitMethod::windowed;
+    bool tied = false; // both ends tied to the design's pose there, as a chain between two switches is
 };
+
+// The design's pose where a node's foot is: what a switch ties a chain's end to.
+geometry::Pose pose_at(const geometry::Alignment& design, const geometry::Point& node) {
+    return geometry::evaluate(design, geometry::project_point(design, node.x, node.y).s);
+}
 
 // The arcs' Cramer-Rao bounds (relative sd of the curvature) against the
 // fit's radius errors: how many arcs no fit could bring within 2 or 3 %
@@ -98,7 +105,12 @@ void run_sigma(const Options& opt, double sigma) {
         const auto t0 = std::chrono::steady_clock::now();
         geometry::FitOptions fo;
         fo.method = opt.method;
-        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, fo);
+        std::optional<geometry::Pose> start, end;
+        if (opt.tied) {
+            start = pose_at(r.design, r.nodes.front());
+            end = pose_at(r.design, r.nodes.back());
+        }
+        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, start, end, fo);
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const truth::TruthScore s = truth::score(r, fit.alignment);
         noise.push_back(fit.quality.noise_sigma_m / sigma);
@@ -174,6 +186,8 @@ int main(int argc, char** argv) {
             o.spacing = v == "dense" ? truth::Spacing::dense : v == "sparse" ? truth::Spacing::sparse : truth::Spacing::osm;
         } else if (a == "--method" && i + 1 < argc) {
             o.method = std::string(argv[++i]) == "design" ? geometry::FitMethod::design_search : geometry::FitMethod::windowed;
+        } else if (a == "--tied") {
+            o.tied = true;
         } else if (a == "--bound") {
             o.bound = true;
         } else {

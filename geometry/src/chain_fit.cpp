@@ -48,7 +48,7 @@ ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& sta
 ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>& start,
                           const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides) {
     const FitResult r = fit_alignment(p, start, end, o, guides);
-    double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.max_m;
+    double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.followed_max_m;
     ChainFit best{r.alignment, ChainMethod::railway, 0, r.quality.noise_sigma_m, r.quality.outliers};
     if ((start || end) && worst > retry_deviation_m) {
         ChainFit s = spliced_fit(p, start, end, o, guides);

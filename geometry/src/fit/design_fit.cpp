@@ -5,6 +5,7 @@
 #include "design_pass.hpp"
 #include "outlier_nodes.hpp"
 #include "reference_line.hpp"
+#include "railodd/geometry/indexed_alignment.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,11 +114,12 @@ std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOpt
     return st;
 }
 
-// One pass in the frame of `ref`: the search, or where the previous pass's
-// design is given, the local search from its structure (later passes
-// refine the frame and the noise, not the structure's discovery).
+// One pass in the frame of `ref`: the search (`search`, with the previous
+// pass's design, where given, as a rival), or the local search from the
+// previous pass's structure (later passes refine the frame and the noise,
+// not the structure's discovery).
 DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
-              const std::optional<Pose>& start, const std::optional<Pose>& end, const FrameDesign* previous) {
+              const std::optional<Pose>& start, const std::optional<Pose>& end, const FrameDesign* previous, bool search) {
     std::vector<FrameNode> nodes = develop(ref, p);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         nodes[i].w = weight[i] / (sigma * sigma);
@@ -130,10 +132,10 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     o.s0 = lo->t;
     o.s1 = hi->t;
     if (start) {
-        o.start = frame_state(ref, *start, &o.s0);
+        o.start = frame_state(ref, *start, o.s0);
     }
     if (end) {
-        o.end = frame_state(ref, *end, &o.s1);
+        o.end = frame_state(ref, *end, o.s1);
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
     o.parameter_penalty = penalty_per_log_node * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
@@ -141,7 +143,17 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     o.transition_prior = transition_prior;
     const std::vector<FrameElement> seed = carried(previous, o);
     DesignPass pass;
-    pass.design = seed.empty() ? design_dp(nodes, o) : refine_structure(nodes, seed, o);
+    pass.design = seed.empty() || search ? design_dp(nodes, o) : refine_structure(nodes, seed, o);
+    if (search && !seed.empty()) {
+        // The search is a beam: on a few sparse nodes with a tied end it can
+        // miss what the last pass found (a turnout's short curve: 535
+        // against 42 on one Cologne chain), and a worse design inflates the
+        // next noise estimate until the design gives up the curve.
+        FrameDesign incumbent = refine_structure(nodes, seed, o);
+        if (incumbent.cost < pass.design.cost) {
+            pass.design = std::move(incumbent);
+        }
+    }
     pass.alignment = to_alignment(ref, pass.design);
     pass.nodes = std::move(nodes);
     pass.options = o;
@@ -236,6 +248,35 @@ double first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
     return scan.tested < 12 ? 0.3 : std::clamp(scan.noise_sigma_m, 0.05, 5.0);
 }
 
+// What a pass's design costs at one noise scale: each node's squared
+// distance to its alignment in units of it, capped at the biweight cut (a
+// stray costs every design the same), and its parameters. Measured on the
+// map, not in the pass's frame, whose linearisation differs from pass to
+// pass. A frame moved onto a design that missed a stretch can lead the next
+// pass further off (a 4 km Cologne chain: 7, 22, 70, 431 m); then the last
+// pass that was no worse stands.
+double pass_cost(const DesignPass& pass, const std::vector<Point2>& p, double sigma) {
+    const IndexedAlignment ia(pass.alignment);
+    double c = 0.0;
+    for (const Point2& q : p) {
+        const double d = ia.project(q.x, q.y).distance;
+        c += std::min(d * d / (sigma * sigma), biweight_cut * biweight_cut);
+    }
+    return c + pass.options.parameter_penalty * static_cast<double>(parameters(pass.design));
+}
+
+// The furthest node the design follows. A chain whose left-out strays lie
+// far off is still a railway fit: the strays are the mapping's fault.
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
+    std::vector<Point> kept;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (weight[i] > 0.0) {
+            kept.push_back(all[i]);
+        }
+    }
+    return measure_fit(a, kept).max_m;
+}
+
 } // namespace
 
 FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
@@ -246,22 +287,27 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
-    DesignPass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr);
+    DesignPass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr, true);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
-        sigma = next;
-        weight = robust_weights(pass.distance, sigma);
+        std::vector<double> w = robust_weights(pass.distance, next);
         const FrameDesign previous = pass.design;
-        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end,
-                        round > 0 ? &previous : nullptr);
+        DesignPass tried = run_pass(alignment_reference(pass.alignment, reference_step_m), p, w, next, start, end,
+                                    &previous, round == 0);
+        if (pass_cost(tried, p, next) > pass_cost(pass, p, next) + pass.options.parameter_penalty) {
+            break;
+        }
+        sigma = next;
+        weight = std::move(w);
+        pass = std::move(tried);
         if (settled) {
             break;
         }
     }
     if (settle_node_weights(pass, weight)) {
         const FrameDesign previous = pass.design;
-        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end, &previous);
+        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end, &previous, false);
     }
     std::vector<Point> all;
     for (const auto& q : p) {
@@ -271,6 +317,7 @@ FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& st
     r.quality.noise_sigma_m = sigma;
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));
+    r.quality.followed_max_m = followed_max(r.alignment, all, weight);
     return r;
 }
 

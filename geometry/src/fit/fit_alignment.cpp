@@ -442,6 +442,7 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
     result.quality.rms_m = q.rms_m;
     result.quality.p95_m = q.p95_m;
     result.quality.max_m = q.max_m;
+    result.quality.followed_max_m = q.max_m;
     result.quality.noise_sigma_m = o.noise_sigma_m;
     result.quality.outliers =
         far.size() + static_cast<std::size_t>(std::count(outliers.outlier.begin(), outliers.outlier.end(), true));

@@ -139,12 +139,11 @@ std::vector<FrameNode> develop(const ReferenceLine& r, const std::vector<Point2>
     return out;
 }
 
-FrameState frame_state(const ReferenceLine& r, const Pose& pose, double* t) {
-    std::size_t hint = 0;
-    const auto [s, e] = r.project(pose.x, pose.y, hint, std::numeric_limits<double>::infinity());
-    if (t) {
-        *t = s;
-    }
+FrameState frame_state(const ReferenceLine& r, const Pose& pose, double& t) {
+    constexpr double reach_m = 50.0;
+    std::size_t hint = r.segment(t);
+    const auto [s, e] = r.project(pose.x, pose.y, hint, reach_m);
+    t = s;
     const double rel = unwrap_near(pose.hdg, r.at(s).hdg) - r.start_heading();
     return {e + r.developed(s), rel, pose.curvature};
 }

@@ -25,9 +25,10 @@ public:
     double start_heading() const { return hdg_.front(); }
     // Chainage and signed offset (left +) of a point, searched near segment `hint` (updated).
     std::pair<double, double> project(double x, double y, std::size_t& hint, double reach_m) const;
+    // The segment holding chainage s (the first or last beyond the ends).
+    std::size_t segment(double s) const;
 
 private:
-    std::size_t segment(double s) const;
     std::vector<double> s_, x_, y_, hdg_, phi_;
 };
 
@@ -42,8 +43,11 @@ ReferenceLine alignment_reference(const Alignment& a, double h);
 // Every node in the frame (weights 1).
 std::vector<FrameNode> develop(const ReferenceLine& r, const std::vector<Point2>& p);
 
-// A state given as a pose (a tied end) in the frame, at chainage *t.
-FrameState frame_state(const ReferenceLine& r, const Pose& pose, double* t);
+// A state given as a pose (a tied end) in the frame. `t`: in, the chainage
+// of the chain end it ties (its node's); out, the pose's own. Sought near
+// the end only: a chain that comes back close to where it began would
+// otherwise tie its end to its start (a loop's 7 m chord).
+FrameState frame_state(const ReferenceLine& r, const Pose& pose, double& t);
 
 // The design as an alignment from the start of its first element.
 Alignment to_alignment(const ReferenceLine& r, const FrameDesign& d);

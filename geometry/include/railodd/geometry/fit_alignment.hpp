@@ -43,6 +43,9 @@ struct FitQuality {
     double rms_m = 0.0; // distance of the mapped nodes to the fitted line
     double p95_m = 0.0;
     double max_m = 0.0;
+    // The furthest node the fit follows: strays it left out do not count
+    // (the windowed fit counts every node).
+    double followed_max_m = 0.0;
     std::size_t windows = 0;
     std::size_t fallback_windows = 0; // windows kept as the fine clothoid spline (no design came near the nodes)
     std::size_t outliers = 0;         // mapped nodes left out of the fit as outliers
