@@ -135,3 +135,15 @@ TEST(DesignFit, APassWorseThanTheLastIsNotTaken) {
         EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.0) << "seed " << seed;
     }
 }
+
+// A Cologne branch (six nodes, its start tied to the switch 14 degrees off
+// the nodes' own heading): the first pass bends through a short tight curve;
+// the search in that design's frame, a beam, missed it (4.05 m off). The
+// last pass's design is its rival, so it is kept (2.0 m).
+TEST(DesignFit, TheSearchKeepsTheLastPassAsARival) {
+    const std::vector<geometry::Point> nodes{{8.211, 24.979}, {11.510, 21.201}, {13.254, 18.945},
+                                             {15.900, 15.033}, {20.785, 7.242},  {115.794, -146.218}};
+    const geometry::Pose start{8.256, 25.028, 5.541080, -0.00037907};
+    const geometry::FitResult fit = geometry::fit_alignment(nodes, start, std::nullopt, design_search());
+    EXPECT_LT(fit.quality.followed_max_m, 2.5);
+}
