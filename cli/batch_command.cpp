@@ -44,8 +44,10 @@ CLI::App* BatchCommand::add(CLI::App& parent) {
 void BatchCommand::setup() {
     std::smatch m;
     static const std::regex shard(R"((\d{1,6})/(\d{1,6}))");
-    if (!std::regex_match(opt_.shard, m, shard) || std::stoul(m[2]) == 0 || std::stoul(m[1]) >= std::stoul(m[2])) {
-        throw UsageError("--shard", "'" + opt_.shard + "' must be I/N with 0 <= I < N (0-based, e.g. 0/10 .. 9/10)");
+    if (!std::regex_match(opt_.shard, m, shard) || std::stoul(m[2]) == 0 || std::stoul(m[1]) >= std::stoul(m[2]) ||
+        std::stoul(m[2]) > max_shards) {
+        throw UsageError("--shard", "'" + opt_.shard + "' must be I/N with 0 <= I < N <= " + std::to_string(max_shards) +
+                                        " (0-based, e.g. 0/10 .. 9/10)");
     }
     shard_index_ = static_cast<unsigned>(std::stoul(m[1]));
     shard_count_ = static_cast<unsigned>(std::stoul(m[2]));

@@ -11,6 +11,13 @@
 
 namespace railodd::cli {
 
+// The largest N of --shard I/N. A shard is one job of a scheduler's array,
+// and schedulers cap arrays near this (Slurm's MaxArraySize defaults to
+// 1001, sites raise it to some 10,000s); 10,000 shards already give each a
+// handful of routes of a national network. Above it, N is a typo, and
+// merge's list of missing shards would only grow.
+inline constexpr unsigned max_shards = 10000;
+
 struct BatchOptions {
     std::string routes_file;
     std::string outroot;

@@ -1,8 +1,5 @@
 #include "batch_runner.hpp"
 
-#include <csignal>
-#include <cstdio>
-
 #include "railodd/util/errors.hpp"
 
 #include <chrono>
@@ -105,6 +102,26 @@ std::string error_line(const fs::path& log) {
     return e.size() > 400 ? e.substr(0, 400) + "..." : e;
 }
 
+// A log over `cap` bytes keeps its first and last cap/2 bytes, with a line
+// saying how much was cut between them.
+void cap_log(const fs::path& log, std::uintmax_t cap) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(log, ec);
+    if (cap == 0 || ec || size <= cap) {
+        return;
+    }
+    const std::uintmax_t half = cap / 2;
+    std::string head(half, '\0'), tail(half, '\0');
+    {
+        std::ifstream in(log, std::ios::binary);
+        in.read(head.data(), static_cast<std::streamsize>(half));
+        in.seekg(static_cast<std::streamoff>(size - half));
+        in.read(tail.data(), static_cast<std::streamsize>(half));
+    }
+    std::ofstream out(log, std::ios::binary | std::ios::trunc);
+    out << head << "\n[railodd: " << size - 2 * half << " bytes of this log left out]\n" << tail;
+}
+
 // posix_spawn: vfork semantics, so a large parent is not copied per route.
 pid_t spawn(const BatchStep& step, std::string& error) {
     std::vector<std::string> args{step.program.empty() ? "railodd" : step.program};
@@ -120,9 +137,16 @@ pid_t spawn(const BatchStep& step, std::string& error) {
     posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, step.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
     posix_spawn_file_actions_addchdir_np(&fa, step.cwd.c_str());
+    // A group of its own: a timeout or an interrupt kills what the step
+    // started too (a player's helper processes), not only the step.
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attr, 0);
     pid_t pid = -1;
     const std::string program = step.program.empty() ? "/proc/self/exe" : step.program;
-    const int rc = ::posix_spawn(&pid, program.c_str(), &fa, nullptr, argv.data(), environ);
+    const int rc = ::posix_spawn(&pid, program.c_str(), &fa, &attr, argv.data(), environ);
+    posix_spawnattr_destroy(&attr);
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) {
         error = "cannot start " + (step.program.empty() ? "railodd " + step.name : step.program) + ": " + std::strerror(rc);
@@ -165,13 +189,14 @@ bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, co
         o.error = WIFSIGNALED(status) ? std::string{"killed by signal "} + std::to_string(WTERMSIG(status))
                                       : error_line(step.log);
         if (r.timed_out_after > 0.0) {
-            char buf[96];
-            std::snprintf(buf, sizeof buf, "timed out: still running after %g s (--route-timeout or the route's timeout), killed",
-                          r.timed_out_after);
-            o.error = buf;
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "timed out: still running after %g s (", r.timed_out_after);
+            o.error = buf + tasks[r.task].timeout_option + "), killed";
         }
+        cap_log(step.log, step.log_cap);
         return true;
     }
+    cap_log(step.log, step.log_cap);
     if (++r.step < tasks[r.task].steps.size()) {
         return !start_step(tasks, r);
     }
@@ -183,6 +208,51 @@ bool step_exited(const std::vector<BatchTask>& tasks, Running& r, int status, co
 
 namespace {
 
+volatile std::sig_atomic_t interrupt_signal = 0;
+
+extern "C" void note_interrupt(int sig) { interrupt_signal = sig; }
+
+// While run_tasks waits, SIGINT and SIGTERM are only noted: it then kills its
+// children and unwinds, instead of dying with them still running and its
+// folders left behind.
+class InterruptGuard {
+public:
+    InterruptGuard() {
+        interrupt_signal = 0;
+        struct sigaction sa {};
+        sa.sa_handler = note_interrupt;
+        sigemptyset(&sa.sa_mask);
+        ::sigaction(SIGINT, &sa, &old_int_);
+        ::sigaction(SIGTERM, &sa, &old_term_);
+    }
+    ~InterruptGuard() {
+        ::sigaction(SIGINT, &old_int_, nullptr);
+        ::sigaction(SIGTERM, &old_term_, nullptr);
+    }
+    InterruptGuard(const InterruptGuard&) = delete;
+    InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+private:
+    struct sigaction old_int_ {};
+    struct sigaction old_term_ {};
+};
+
+void stop_on_interrupt(std::vector<Running>& running) {
+    const int sig = interrupt_signal;
+    if (sig == 0) {
+        return;
+    }
+    for (const auto& r : running) {
+        ::kill(-r.pid, SIGKILL);
+    }
+    for (const auto& r : running) {
+        int status = 0;
+        while (::waitpid(r.pid, &status, 0) < 0 && errno == EINTR) {
+        }
+    }
+    throw Interrupted(sig);
+}
+
 // A task past its time is killed; wait4 then reaps it as failed.
 void kill_overdue(const std::vector<BatchTask>& tasks, std::vector<Running>& running) {
     const auto now = Clock::now();
@@ -190,7 +260,7 @@ void kill_overdue(const std::vector<BatchTask>& tasks, std::vector<Running>& run
         const double timeout_s = tasks[r.task].timeout_s;
         if (timeout_s > 0.0 && r.timed_out_after == 0.0 &&
             std::chrono::duration<double>(now - r.start).count() > timeout_s) {
-            ::kill(r.pid, SIGKILL);
+            ::kill(-r.pid, SIGKILL);
             r.timed_out_after = timeout_s;
         }
     }
@@ -200,6 +270,7 @@ void kill_overdue(const std::vector<BatchTask>& tasks, std::vector<Running>& run
 
 void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
                const std::function<void(std::size_t, const TaskOutcome&)>& on_done) {
+    const InterruptGuard guard;
     std::vector<Running> running;
     std::size_t next = 0;
     auto finish = [&](Running& r) {
@@ -220,6 +291,7 @@ void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress
             shown.emplace_back(tasks[r.task].id, tasks[r.task].steps[r.step].name);
         }
         progress.running(shown);
+        stop_on_interrupt(running);
         kill_overdue(tasks, running);
         int status = 0;
         rusage ru{};

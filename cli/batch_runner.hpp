@@ -4,6 +4,7 @@
 // wait4() gives its peak RSS. A route is a sequence of steps (convert, then
 // scenarios) whose output goes to a log file in the route's folder.
 #include <chrono>
+#include <cstdint>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -18,12 +19,14 @@ struct BatchStep {
     std::filesystem::path log;      // stdout and stderr of the step (absolute)
     std::filesystem::path cwd;      // the step runs there (absolute)
     std::string program;            // executable (absolute); empty: railodd itself
+    std::uintmax_t log_cap = 0;     // bytes of the log kept, head and tail (0: all)
 };
 
 struct BatchTask {
     std::string id;
     std::vector<BatchStep> steps;   // the next starts only when the previous exited 0
     double timeout_s = 0.0;         // killed when still running after this (0: no limit)
+    std::string timeout_option = "--route-timeout or the route's timeout"; // named where it times out
 };
 
 struct TaskOutcome {
@@ -59,9 +62,12 @@ private:
 };
 
 // Runs every task, at most `jobs` at once; on_done is called in the order the
-// tasks finish (index into `tasks`). A task still running its timeout_s
-// after it started is killed (SIGKILL) and fails with "timed out"; the
-// others go on.
+// tasks finish (index into `tasks`). Each step runs in a process group of its
+// own: a task still running its timeout_s after it started is killed with
+// everything it started (SIGKILL to the group) and fails with "timed out";
+// the others go on. SIGINT or SIGTERM to railodd meanwhile kills every
+// running group and throws Interrupted, so that the caller's temporary and
+// staging folders are removed as the stack unwinds.
 void run_tasks(const std::vector<BatchTask>& tasks, unsigned jobs, BatchProgress& progress,
                const std::function<void(std::size_t, const TaskOutcome&)>& on_done);
 

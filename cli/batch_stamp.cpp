@@ -1,6 +1,7 @@
 #include "batch_stamp.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/json_depth.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -71,7 +72,11 @@ bool up_to_date(const fs::path& dir, const BatchRoute& route, const nlohmann::or
     if (!fs::is_regular_file(file)) {
         return false;
     }
-    const auto old = nlohmann::ordered_json::parse(read_text(file), nullptr, false);
+    const std::string text = read_text(file);
+    if (json_depth(text) > max_json_depth) {
+        return false; // not a stamp railodd wrote: the route is built again
+    }
+    const auto old = nlohmann::ordered_json::parse(text, nullptr, false);
     if (old.is_discarded() || old != stamp) {
         return false;
     }

@@ -60,6 +60,7 @@ void CropCommand::setup() {
 }
 
 int CropCommand::run() {
+    finish_pending_commit(fs::absolute(opt_.map).parent_path());
     xodr_check::CropSpec spec;
     spec.roads = opt_.roads;
     if (!opt_.box.empty()) {

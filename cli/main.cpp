@@ -52,6 +52,9 @@ int main(int argc, char** argv) {
                 return commands[i]->run();
             }
         }
+    } catch (const Interrupted& e) {
+        std::cerr << "railodd: " << e.what() << ": stopped, nothing written\n";
+        return 128 + e.signal();
     } catch (const UsageError& e) {
         std::cerr << "railodd: error: " << e.what() << '\n';
         return exit_usage;

@@ -1,7 +1,9 @@
 #include "merge_command.hpp"
+#include "batch_command.hpp"
 #include "option_checks.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/output_stage.hpp"
 #include "railodd/util/input_file.hpp"
 #include "railodd/util/json_input.hpp"
 #include "railodd/util/file_names.hpp"
@@ -44,15 +46,13 @@ namespace {
 // Parses a JSON file; with `keep`, only those top-level keys are built (an
 // odd_profile.json of a whole network is large, merge needs its summary).
 json read_json(const fs::path& path, const std::set<std::string>& keep = {}) {
-    require_input_file(path, "batch output");
-    std::ifstream in(path, std::ios::binary);
     json::parser_callback_t cb = [&keep](int depth, json::parse_event_t event, json& parsed) {
         return keep.empty() || depth != 1 || event != json::parse_event_t::key ||
                keep.contains(parsed.get<std::string>());
     };
-    json j = json::parse(in, cb, false);
-    if (j.is_discarded() || !j.is_object()) {
-        throw InputError(path.string(), "not valid JSON");
+    json j = read_json_file<json>(path, "batch output", cb);
+    if (!j.is_object()) {
+        throw InputError(path.string(), "not a JSON object (batch output)");
     }
     return j;
 }
@@ -67,9 +67,6 @@ void require_format(const json& j, const fs::path& path, const char* format, int
                                             (newest > 1 ? " to " + std::to_string(newest) : std::string{}));
     }
 }
-
-// `batch --shard I/N` takes N of at most six digits.
-constexpr long long max_shards = 999999;
 
 struct Summaries {
     std::vector<std::string> files;
@@ -167,6 +164,7 @@ json merge_coverage(const fs::path& root, const std::vector<std::string>& ids) {
     long scenarios = 0;
     for (const auto& id : ids) {
         const fs::path p = root / id / "scenarios" / "coverage.json";
+        finish_pending_commit(p.parent_path());
         reading_json(p, [&] {
             const json c = read_json(p);
             require_format(c, p, "scenario_coverage");
@@ -237,6 +235,7 @@ json merge_profiles(const fs::path& root, const std::vector<std::string>& ids) {
     json summary = json::object();
     for (const auto& id : ids) {
         const fs::path p = root / id / "odd_profile.json";
+        finish_pending_commit(p.parent_path());
         reading_json(p, [&] {
             const json j = read_json(p, {"railodd", "summary"});
             require_format(j, p, "odd_profile", 2);
@@ -260,7 +259,9 @@ int MergeCommand::run() {
     out["routes_file_hash"] = s.first["routes_file_hash"];
     out["routes_total"] = s.first["routes_total"];
     out["summaries"] = s.files;
-    json missing = json::array();
+    // Built as plain vectors and converted once: with JSON_DIAGNOSTICS each
+    // push_back onto a JSON array re-parents all its elements (quadratic).
+    std::vector<unsigned> missing;
     for (unsigned i = 0; i < s.shard_count; ++i) {
         if (!s.shards.contains(i)) {
             missing.push_back(i);
@@ -268,7 +269,7 @@ int MergeCommand::run() {
     }
     out["shards"] = {{"count", s.shard_count}, {"missing", missing}};
     json counts = {{"ok", 0}, {"failed", 0}, {"skipped", 0}};
-    json routes = json::array();
+    json::array_t routes;
     std::vector<std::string> with_outputs, with_scenarios;
     for (const auto& [id, r] : s.routes) {
         const std::string status = r.value("status", "");
@@ -283,7 +284,7 @@ int MergeCommand::run() {
         routes.push_back(r);
     }
     out["counts"] = std::move(counts);
-    out["routes"] = std::move(routes);
+    out["routes"] = json(std::move(routes));
     out["coverage"] = merge_coverage(root, with_scenarios);
     out["odd_profile"] = merge_profiles(root, with_outputs);
     {

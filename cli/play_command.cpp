@@ -1,6 +1,9 @@
 #include "play_command.hpp"
 
 #include "batch_runner.hpp"
+#include "option_checks.hpp"
+#include "play_manifest.hpp"
+#include "play_results.hpp"
 
 #include "railodd/scenario/play.hpp"
 #include "railodd/util/errors.hpp"
@@ -9,6 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
+#include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -62,30 +68,6 @@ fs::path find_player(const std::string& given) {
                          "esmini on the PATH");
 }
 
-ojson read_manifest(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw InputError(file.string(), "no scenario manifest (run `railodd scenarios` into this folder first)");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    ojson j = ojson::parse(text.str(), nullptr, false);
-    if (!j.is_object() || !j.contains("scenarios") || !j["scenarios"].is_array()) {
-        throw InputError(file.string(), "not a railodd scenario manifest (no \"scenarios\" array)");
-    }
-    for (const auto& s : j["scenarios"]) {
-        if (!s.is_object() || !s.contains("id") || !s["id"].is_string() || !s.contains("actors") || !s.contains("ego")) {
-            throw InputError(file.string(), "a scenario without id, ego or actors (written by an older railodd? "
-                                            "run `railodd scenarios` again)");
-        }
-        if (!is_safe_name(s["id"].get<std::string>())) {
-            throw InputError(file.string(), "scenario id '" + s["id"].get<std::string>() + "' is not a file name (" +
-                                                safe_name_rule + ")");
-        }
-    }
-    return j;
-}
-
 std::string player_version(const fs::path& log) {
     std::ifstream in(log);
     std::string line;
@@ -97,30 +79,15 @@ std::string player_version(const fs::path& log) {
     return {};
 }
 
-ojson criticality_json(const play::Criticality& c) {
-    ojson actors = ojson::array();
-    for (const auto& a : c.actors) {
-        ojson j = {{"name", a.name}, {"min_distance_m", a.min_distance_m}};
-        j["onset_s"] = a.onset_s ? ojson(*a.onset_s) : ojson(nullptr);
-        j["distance_at_onset_m"] = a.distance_at_onset_m ? ojson(*a.distance_at_onset_m) : ojson(nullptr);
-        j["ttc_at_onset_s"] = a.ttc_at_onset_s ? ojson(*a.ttc_at_onset_s) : ojson(nullptr);
-        if (a.arrival_s) {
-            j["arrival_s"] = *a.arrival_s;
-            j["distance_at_arrival_m"] = *a.distance_at_arrival_m;
-        }
-        actors.push_back(std::move(j));
-    }
-    return {{"ego_speed_mps", c.ego_speed_mps}, {"stopping_distance_m", c.stopping_distance_m},
-            {"sight_distance_m", c.sight_distance_m}, {"sight_limited_by", c.sight_limited_by},
-            {"can_stop", c.can_stop}, {"actors", std::move(actors)}};
-}
-
 // The player's binary recordings, converted and then removed: a folder of
-// our own under the system's temporary directory, gone with the run.
+// our own under the system's temporary directory, gone with the run. Named
+// with the run's PID: folders of runs killed outright (SIGKILL) are removed
+// by the next run once their PID is gone.
 struct Scratch {
     fs::path dir;
     Scratch() {
-        std::string t = (fs::temp_directory_path() / "railodd-play-XXXXXX").string();
+        remove_dead_runs_folders();
+        std::string t = (fs::temp_directory_path() / (prefix() + std::to_string(::getpid()) + "-XXXXXX")).string();
         if (!::mkdtemp(t.data())) {
             throw OutputError(t, "cannot make a temporary folder for the recordings");
         }
@@ -132,125 +99,38 @@ struct Scratch {
     }
     Scratch(const Scratch&) = delete;
     Scratch& operator=(const Scratch&) = delete;
-};
 
-struct Played {
-    ojson entry;
-    bool passed = false;
-    bool can_stop = false;
-    std::string svg; // with --plot
-};
-
-// One scenario's record: ran or not, the checks on its recording, the figures.
-Played analyse_one(const ojson& sc, const TaskOutcome& outcome, const fs::path& csv, const fs::path& log,
-                   const play::Options& o, const std::vector<play::LaneLine>* lanes) {
-    Played p;
-    p.entry = {{"id", sc["id"]}, {"template", sc.value("template", "")}, {"ran", outcome.ok}};
-    if (!outcome.ok) {
-        p.entry["exit_code"] = outcome.exit_code;
-        p.entry["error"] = outcome.failed_step + ": " + outcome.error;
-        p.entry["passed"] = false;
-        return p;
-    }
-    std::ifstream log_in(log);
-    const play::PlayerLog pl = play::read_player_log(log_in);
-    std::ifstream csv_in(csv);
-    const play::Trajectories tr = play::read_trajectories(csv_in, csv.string());
-    const nlohmann::json scenario = nlohmann::json::parse(sc.dump());
-    const play::Analysis a = play::analyse(scenario, tr, pl, o);
-    if (lanes) {
-        p.svg = play::plot_svg(scenario, tr, *lanes, a);
-    }
-    ojson checks = ojson::array();
-    for (const auto& c : a.checks) {
-        checks.push_back({{"check", c.name}, {"passed", c.passed}, {"detail", c.detail}});
-    }
-    p.passed = a.passed();
-    p.can_stop = a.criticality.can_stop;
-    p.entry["passed"] = p.passed;
-    p.entry["checks"] = std::move(checks);
-    p.entry["criticality"] = criticality_json(a.criticality);
-    p.entry["player_errors_ignored"] = pl.ignorable_errors.size();
-    p.entry["player_warnings"] = pl.warnings;
-    return p;
-}
-
-std::string text_report(const ojson& report) {
-    std::ostringstream t;
-    const auto& s = report["summary"];
-    t << "railodd play: " << s["scenarios"].get<int>() << " scenarios, " << s["passed"].get<int>() << " pass their checks, "
-      << s["failed"].get<int>() << " fail; the train can stop within its sight distance in " << s["can_stop"].get<int>()
-      << "\n\n";
-    for (const auto& sc : report["scenarios"]) {
-        t << (sc["passed"].get<bool>() ? "ok   " : "FAIL ") << sc["id"].get<std::string>();
-        if (!sc["ran"].get<bool>()) {
-            t << ": did not run: " << sc["error"].get<std::string>() << '\n';
-            continue;
-        }
-        const auto& c = sc["criticality"];
-        char line[200];
-        std::snprintf(line, sizeof line, ": %.0f km/h, stops in %.0f m, sees %.0f m (%s): %s", c["ego_speed_mps"].get<double>() * 3.6,
-                      c["stopping_distance_m"].get<double>(), c["sight_distance_m"].get<double>(),
-                      c["sight_limited_by"].get<std::string>().c_str(), c["can_stop"].get<bool>() ? "can stop" : "cannot stop");
-        t << line << '\n';
-        for (const auto& ch : sc["checks"]) {
-            if (!ch["passed"].get<bool>()) {
-                t << "       failed: " << ch["check"].get<std::string>() << ": " << ch["detail"].get<std::string>() << '\n';
+private:
+    static std::string prefix() { return "railodd-play-"; }
+    static void remove_dead_runs_folders() {
+        std::error_code ec;
+        std::vector<fs::path> dead;
+        for (fs::directory_iterator it(fs::temp_directory_path(), ec), end; !ec && it != end; it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.rfind(prefix(), 0) != 0) {
+                continue;
+            }
+            const long pid = std::strtol(name.c_str() + prefix().size(), nullptr, 10);
+            if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+                dead.push_back(it->path());
             }
         }
-    }
-    return t.str();
-}
-
-// The manifest gains each scenario's play outcome and criticality, and
-// coverage.json the criticality classes (can stop / cannot) per template and
-// overall: the traceability record says what each scenario turned out to be.
-void record_criticality(OutputStage& stage, const fs::path& dir, ojson manifest, const ojson& report) {
-    std::map<std::string, std::pair<int, int>> per_template; // can stop, cannot
-    int can = 0, cannot = 0;
-    for (std::size_t i = 0; i < report["scenarios"].size(); ++i) {
-        const ojson& r = report["scenarios"][i];
-        ojson& m = manifest["scenarios"][i];
-        m["play"] = {{"passed", r["passed"]}};
-        if (!r.contains("criticality")) {
-            continue;
+        for (const auto& d : dead) {
+            fs::remove_all(d, ec);
         }
-        m["play"]["criticality"] = r["criticality"];
-        const bool stops = r["criticality"]["can_stop"].get<bool>();
-        auto& t = per_template[m.value("template", "")];
-        (stops ? t.first : t.second)++;
-        (stops ? can : cannot)++;
     }
-    stage.write_text("manifest.json", manifest.dump(1) + "\n");
-    std::ifstream in(dir / "coverage.json", std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    ojson coverage = ojson::parse(text.str(), nullptr, false);
-    if (!coverage.is_object()) {
-        return; // no coverage of this set to add to
-    }
-    ojson templates = ojson::object();
-    for (const auto& [id, n] : per_template) {
-        templates[id] = {{"can_stop", n.first}, {"cannot_stop", n.second}};
-    }
-    coverage["criticality"] = {{"can_stop", can}, {"cannot_stop", cannot}, {"templates", std::move(templates)}};
-    stage.write_text("coverage.json", coverage.dump(1) + "\n");
-}
+};
 
-// The map's lanes as the player reads them: esmini's odrplot, beside the
-// player, on the set's map (the first scenario's, relative to SCENDIR).
+// The map's lanes as the player reads them: esmini's odrplot (setup() found
+// it), on the set's map (the first scenario's, relative to SCENDIR).
 std::vector<play::LaneLine> map_lanes(const ojson& manifest, const fs::path& dir, const fs::path& scratch,
-                                      const std::string& player) {
+                                      const std::string& odrplot) {
     if (manifest["scenarios"].empty()) {
         return {};
     }
-    const fs::path map = dir / manifest["scenarios"][0].value("map", "");
-    const fs::path odrplot = fs::path{player}.parent_path() / "odrplot", csv = scratch / "lanes.csv";
-    if (!executable(odrplot)) {
-        throw InputError(odrplot.string(), "no odrplot beside the player (esmini's map plotter), needed by --plot");
-    }
+    const fs::path map = dir / manifest["scenarios"][0].value("map", ""), csv = scratch / "lanes.csv";
     std::vector<BatchTask> task{{"lanes", {{"odrplot", {map.string(), csv.string(), "1.0"}, scratch / "odrplot.log", scratch,
-                                            odrplot.string()}}}};
+                                            odrplot}}}};
     BatchProgress quiet(1, 1, false, "maps");
     TaskOutcome outcome;
     run_tasks(task, 1, quiet, [&](std::size_t, const TaskOutcome& o) { outcome = o; });
@@ -259,6 +139,15 @@ std::vector<play::LaneLine> map_lanes(const ojson& manifest, const fs::path& dir
         throw InputError(map.string(), "odrplot could not plot the map: " + outcome.error);
     }
     return play::read_lane_lines(in);
+}
+
+// Simulated seconds of the scenario as `railodd scenarios` sets its stop
+// time: the ego's run at its speed, its start delay and 30 s.
+double simulated_seconds(const ojson& sc) {
+    const ojson& ego = sc["ego"];
+    const double metres = ego.value("run_up_m", 0.0) + ego.value("overrun_m", 0.0);
+    const double speed = std::max(ego.value("speed_kmh", 0.0) / 3.6, 1.0);
+    return std::ceil(metres / speed) + 30.0 + std::ceil(std::max(ego.value("start_delay_s", 0.0), 0.0));
 }
 
 } // namespace
@@ -270,11 +159,16 @@ CLI::App* PlayCommand::add(CLI::App& parent) {
     app->add_option("--player", opt_.player,
                     "esmini executable (default: $RAILODD_ESMINI, esmini on the PATH, ../shared/tools/esmini/bin/esmini)");
     app->add_option("--jobs", opt_.jobs, "Scenarios played at once (default: one per hardware thread)")
+        ->check(unsigned_integer)
         ->check(CLI::Range(1u, 256u));
-    app->add_option("--timestep", opt_.timestep_s, "Player time step (s)")->check(CLI::Range(0.001, 0.5));
+    app->add_option("--timestep", opt_.timestep_s, "Player time step (s)")->check(finite_range(0.001, 0.5));
     app->add_option("--reaction-time", opt_.reaction_time_s,
                     "Time from seeing the hazard to full braking, for the stopping distance (s)")
-        ->check(CLI::Range(0.0, 10.0));
+        ->check(finite_range(0.0, 10.0));
+    app->add_option("--player-timeout", opt_.player_timeout_s,
+                    "Seconds a scenario's run may take before the player is killed and the scenario fails "
+                    "(default: from the scenario's length, 60 s plus twice its simulated time at a 0.05 s step)")
+        ->check(finite_range(0.001, 1e6));
     app->add_flag("--plot", opt_.plot, "Also draw each run as play/ID.svg: lanes (esmini odrplot), paths, train and actors at the hazard");
     app->add_flag("--quiet", opt_.quiet, "No progress lines");
     return app;
@@ -295,32 +189,47 @@ void PlayCommand::setup() {
     if (!executable(dat2csv_)) {
         throw InputError(dat2csv_, "no dat2csv beside the player (esmini's recording converter)");
     }
+    // Checked before anything is played: found missing after the runs, every result would be lost.
+    if (opt_.plot && !executable(player.parent_path() / "odrplot")) {
+        throw InputError((player.parent_path() / "odrplot").string(),
+                         "no odrplot beside the player (esmini's map plotter), needed by --plot");
+    }
     if (opt_.jobs == 0) {
         opt_.jobs = std::max(1u, std::thread::hardware_concurrency());
     }
 }
 
-int PlayCommand::run() {
-    const fs::path dir = fs::absolute(opt_.scendir);
-    const ojson manifest = read_manifest(dir / "manifest.json");
-    OutputStage stage(dir);
-    const Scratch scratch;
+double PlayCommand::timeout_of(const ojson& sc) const {
+    if (opt_.player_timeout_s > 0.0) {
+        return opt_.player_timeout_s;
+    }
+    // A headless player runs many times faster than real time; the margin is
+    // for a loaded machine and a finer time step (more steps per second).
+    return 60.0 + 2.0 * simulated_seconds(sc) * std::max(1.0, 0.05 / opt_.timestep_s);
+}
+
+// One task per scenario: play into the scratch folder, then convert the
+// recording into the staged play/ID.csv.
+std::vector<BatchTask> PlayCommand::tasks_of(const ojson& manifest, const fs::path& dir, OutputStage& stage,
+                                             const fs::path& scratch) const {
     std::vector<BatchTask> tasks;
-    std::vector<fs::path> recordings; // play/ID.csv per task
     const std::string step = std::to_string(opt_.timestep_s);
     for (const auto& sc : manifest["scenarios"]) {
         const std::string id = sc["id"];
-        const fs::path dat = scratch.dir / (id + ".dat"), log = stage.staged_path("play/" + id + ".log"),
+        const fs::path dat = scratch / (id + ".dat"), log = stage.staged_path("play/" + id + ".log"),
                        csv = stage.staged_path("play/" + id + ".csv");
-        BatchTask t{id, {}};
-        t.steps.push_back({"play", {"--headless", "--osc", (dir / sc.value("file", id + ".xosc")).string(),
+        BatchTask t{id, {}, timeout_of(sc), "--player-timeout, default from the scenario's length"};
+        t.steps.push_back({"play", {"--headless", "--osc", scenario_file(dir, sc).string(),
                                     "--fixed_timestep", step, "--record", dat.string(), "--disable_log"},
-                           log, scratch.dir, opt_.player});
+                           log, scratch, opt_.player, player_log_cap});
         t.steps.push_back({"dat2csv", {"--file", dat.string(), "--extended", "--precision", "6", "--csv", csv.string()},
-                           scratch.dir / (id + ".dat2csv.log"), scratch.dir, dat2csv_});
+                           scratch / (id + ".dat2csv.log"), scratch, dat2csv_, player_log_cap});
         tasks.push_back(std::move(t));
-        recordings.push_back(csv);
     }
+    return tasks;
+}
+
+std::vector<TaskOutcome> PlayCommand::play_all(const std::vector<BatchTask>& tasks) const {
     std::vector<TaskOutcome> outcomes(tasks.size());
     BatchProgress progress(tasks.size(), opt_.jobs, !opt_.quiet && ::isatty(STDERR_FILENO) == 1, "scenarios");
     run_tasks(tasks, opt_.jobs, progress, [&](std::size_t i, const TaskOutcome& o) {
@@ -330,10 +239,25 @@ int PlayCommand::run() {
         }
     });
     progress.close();
+    return outcomes;
+}
+
+int PlayCommand::run() {
+    const fs::path dir = fs::absolute(opt_.scendir);
+    // The stage first: it finishes a commit a killed run left in the folder
+    // before the manifest is read.
+    OutputStage stage(dir);
+    const PlaySet set = read_play_set(dir);
+    const ojson& manifest = set.manifest;
+    const Scratch scratch;
+    const std::vector<BatchTask> tasks = tasks_of(manifest, dir, stage, scratch.dir);
+    const std::vector<TaskOutcome> outcomes = play_all(tasks);
 
     play::Options po;
     po.reaction_time_s = opt_.reaction_time_s;
-    const std::vector<play::LaneLine> lanes = opt_.plot ? map_lanes(manifest, dir, scratch.dir, opt_.player) : std::vector<play::LaneLine>{};
+    const std::vector<play::LaneLine> lanes =
+        opt_.plot ? map_lanes(manifest, dir, scratch.dir, (fs::path{opt_.player}.parent_path() / "odrplot").string())
+                  : std::vector<play::LaneLine>{};
     ojson report;
     report["railodd"] = {{"format", "play_report"}, {"format_version", 1}};
     report["player"] = {{"path", opt_.player}, {"version", tasks.empty() ? "" : player_version(tasks[0].steps[0].log)}};
@@ -344,10 +268,11 @@ int PlayCommand::run() {
     int passed = 0, can_stop = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         const auto& sc = manifest["scenarios"][i];
-        Played p = analyse_one(sc, outcomes[i], recordings[i], tasks[i].steps[0].log, po,
-                               opt_.plot ? &lanes : nullptr);
+        const std::string id = sc["id"].get<std::string>();
+        Played p = analyse_one(sc, outcomes[i], tasks[i].steps[1].args.back(), "play/" + id + ".csv",
+                               tasks[i].steps[0].log, po, opt_.plot ? &lanes : nullptr);
         if (!p.svg.empty()) {
-            stage.write_text("play/" + sc["id"].get<std::string>() + ".svg", p.svg);
+            stage.write_text("play/" + id + ".svg", p.svg);
         }
         passed += p.passed;
         can_stop += p.can_stop;
@@ -356,7 +281,7 @@ int PlayCommand::run() {
     const int total = static_cast<int>(tasks.size());
     report["summary"] = {{"scenarios", total}, {"passed", passed}, {"failed", total - passed}, {"can_stop", can_stop}};
     report["scenarios"] = std::move(entries);
-    record_criticality(stage, dir, manifest, report);
+    record_criticality(stage, manifest, set.coverage, report);
     stage.write_text("play.json", report.dump(2) + "\n");
     const std::string text = text_report(report);
     stage.write_text("play.txt", text);

@@ -8,6 +8,7 @@
 #include "railodd/odd/spec_check.hpp"
 #include "railodd/odd/taxonomy.hpp"
 #include "railodd/util/errors.hpp"
+#include "railodd/util/output_stage.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -43,6 +44,7 @@ CLI::App* ProfileCommand::add(CLI::App& parent) {
 
 int ProfileCommand::run() {
     const fs::path file = profile_file(opt_.map_dir);
+    finish_pending_commit(file.parent_path().empty() ? fs::path{"."} : file.parent_path());
     const odd::OddProfile profile = odd::read_profile(file);
     std::optional<odd::Taxonomy> taxonomy;
     if (const auto tax_file = taxonomy_file(opt_.taxonomy, !opt_.odd_spec.empty(), profile, file)) {

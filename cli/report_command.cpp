@@ -48,9 +48,18 @@ void ReportCommand::setup() {
     if (opt_.output.empty()) {
         opt_.output = (fs::path{opt_.map_dir} / "report.html").string();
     }
+    if (fs::is_directory(opt_.output)) {
+        throw OutputError(opt_.output, "is a folder: -o names the page's file (e.g. " +
+                                           (fs::path{opt_.output} / "report.html").string() + ")");
+    }
 }
 
 int ReportCommand::run() {
+    for (const std::string& dir : {opt_.map_dir, opt_.scenario_dir}) {
+        if (!dir.empty()) {
+            finish_pending_commit(dir);
+        }
+    }
     report::ReportOptions o;
     o.map_dir = opt_.map_dir;
     o.scenario_dir = opt_.scenario_dir;

@@ -13,6 +13,7 @@
 #include "railodd/util/errors.hpp"
 #include "railodd/util/file_names.hpp"
 #include "railodd/util/input_file.hpp"
+#include "railodd/util/json_input.hpp"
 #include "railodd/util/output_stage.hpp"
 
 #include <nlohmann/json.hpp>
@@ -71,11 +72,12 @@ nlohmann::json old_manifest(const fs::path& file) {
     if (!fs::is_regular_file(file, ec)) {
         return nullptr;
     }
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
-    return j.is_object() ? j : nullptr;
+    try {
+        nlohmann::json j = read_json_file<nlohmann::json>(file, "earlier scenario manifest");
+        return j.is_object() ? std::move(j) : nlohmann::json(nullptr);
+    } catch (const InputError&) {
+        return nullptr;
+    }
 }
 
 // The files an earlier run's manifest lists: its scenarios, behaviours and
@@ -192,6 +194,7 @@ void ScenariosCommand::setup() {
 int ScenariosCommand::run() {
     // Read the map: its ODD profile, where it lies and its date
     const fs::path map_dir{opt_.map_dir};
+    finish_pending_commit(map_dir); // the map folder as its last run left it, not half committed
     const odd::OddProfile profile = odd::read_profile(map_dir / "odd_profile.json");
     const fs::path xodr = map_dir / "map.xodr";
     const std::string date = map_date(xodr);

@@ -2,6 +2,7 @@
 #include "option_checks.hpp"
 
 #include "railodd/util/errors.hpp"
+#include "railodd/util/output_stage.hpp"
 #include "railodd/xodr_check/check.hpp"
 
 #include <filesystem>
@@ -33,6 +34,7 @@ void ValidateCommand::setup() {
 }
 
 int ValidateCommand::run() {
+    finish_pending_commit(fs::absolute(opt_.file).parent_path());
     xodr_check::Verdict verdict;
     const xodr_check::CheckResult checks = xodr_check::check_file(opt_.file, verdict.limits);
     verdict.checks = &checks;

@@ -182,3 +182,38 @@ TEST(OutputStage, NamesOutsideTheFolderAreRefused) {
     }
     EXPECT_FALSE(std::filesystem::exists(dir / "x.txt"));
 }
+
+// A commit whose move cannot succeed (the name is a folder there) fails the
+// run, and leaves neither journal nor staging: no later run into the folder
+// is stopped by it.
+TEST(OutputStage, ACommitThatCannotMoveLeavesNoJournal) {
+    const auto out = scratch_dir() / "out";
+    std::filesystem::create_directories(out / "page.html");
+    {
+        OutputStage stage(out);
+        stage.write_text("page.html", "<html/>");
+        EXPECT_THROW(stage.commit(), OutputError);
+    }
+    EXPECT_FALSE(std::filesystem::exists(out / ".railodd-journal"));
+    EXPECT_EQ(entries(out), 1u); // page.html/ only: no staging folder
+    OutputStage later(out);
+    later.write_text("other.html", "<html/>");
+    EXPECT_EQ(later.commit().size(), 1u);
+}
+
+// A folder another command only reads: the commit a killed run left there is
+// finished before the reader looks, not after.
+TEST(OutputStage, AReaderFinishesAPendingCommitFirst) {
+    const auto dir = scratch_dir() / "set";
+    const auto staging = dir / ".railodd-staging-12345";
+    std::filesystem::create_directories(staging);
+    test::write_file(dir / "manifest.json", "old");
+    test::write_file(staging / "manifest.json", "new");
+    test::write_file(dir / ".railodd-journal", ".railodd-staging-12345\n+ manifest.json\n");
+    finish_pending_commit(dir);
+    EXPECT_EQ(read(dir / "manifest.json"), "new");
+    EXPECT_FALSE(std::filesystem::exists(dir / ".railodd-journal"));
+    EXPECT_FALSE(std::filesystem::exists(staging));
+    finish_pending_commit(dir); // nothing pending: nothing changes
+    EXPECT_EQ(read(dir / "manifest.json"), "new");
+}

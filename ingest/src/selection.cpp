@@ -2,6 +2,7 @@
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/input_file.hpp"
+#include "railodd/util/json_depth.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -101,6 +102,7 @@ void collect_rings(const json& geom, const std::string& file, std::vector<std::v
 
 PolygonSelection load_polygon_geojson(const std::filesystem::path& file) {
     const std::string text = read_input_file(file, "polygon file");
+    require_json_depth(text, file);
     PolygonSelection sel;
     sel.source = file.string();
     try {

@@ -11,6 +11,7 @@
 
 #include "railodd/util/errors.hpp"
 #include "railodd/util/input_file.hpp"
+#include "railodd/util/json_depth.hpp"
 
 #include <fstream>
 #include <functional>
@@ -310,6 +311,7 @@ private:
 
 OddProfile read_profile(const std::filesystem::path& file) {
     const std::string text = read_input_file(file, "ODD profile");
+    require_json_depth(text, file);
     // Parsed keeping key order: attributes and the summary's classes stay in
     // the order the tagger wrote them (the taxonomy's bin order).
     ElementStream stream;

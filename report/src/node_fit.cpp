@@ -42,20 +42,22 @@ std::vector<Way> track_ways(const std::filesystem::path& file, const GeoFrame& f
         throw InputError(file.string(), "not a GeoJSON FeatureCollection (no \"features\" array)");
     }
     std::vector<Way> ways;
-    for (const auto& f : j["features"]) {
-        if (f.value("properties", ojson::object()).value("layer", "") != "track" || !f.contains("geometry")) {
-            continue;
-        }
-        const auto& g = f["geometry"];
-        const std::string type = g.value("type", "");
-        if (type == "LineString") {
-            add_line(g.at("coordinates"), frame, ways);
-        } else if (type == "MultiLineString") {
-            for (const auto& part : g.at("coordinates")) {
-                add_line(part, frame, ways);
+    reading_json(file, [&] {
+        for (const auto& f : j["features"]) {
+            if (f.value("properties", ojson::object()).value("layer", "") != "track" || !f.contains("geometry")) {
+                continue;
+            }
+            const auto& g = f["geometry"];
+            const std::string type = g.value("type", "");
+            if (type == "LineString") {
+                add_line(g.at("coordinates"), frame, ways);
+            } else if (type == "MultiLineString") {
+                for (const auto& part : g.at("coordinates")) {
+                    add_line(part, frame, ways);
+                }
             }
         }
-    }
+    });
     return ways;
 }
 

@@ -14,6 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "railodd/util/json_input.hpp"
+#include "railodd/util/json_shape.hpp"
+
 #include <nlohmann/json.hpp>
 
 namespace railodd::xodr {
@@ -23,6 +26,7 @@ struct Map;
 namespace railodd::report::detail {
 
 using ojson = nlohmann::ordered_json;
+using railodd::read_json_file;
 // With JSON_DIAGNOSTICS, ordered_json's push_back re-parents every element of
 // the array (O(n) per call): large arrays are built as array_t and moved into
 // a value once.
@@ -104,9 +108,15 @@ struct NodeFit {
 NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
                  const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes);
 
-// A JSON file railodd wrote; throws InputError naming the file and `what`
-// when it is missing or not JSON.
-ojson read_json_file(const std::filesystem::path& file, const std::string& what);
+// The fields the page reads of each JSON input, and the types they must have.
+const std::vector<JsonField>& convert_report_shape();
+const std::vector<JsonField>& coverage_shape();
+const std::vector<JsonField>& manifest_shape();
+const std::vector<JsonField>& play_shape();
+
+// A JSON object read with read_json_file and checked against `shape`.
+ojson read_checked_json(const std::filesystem::path& file, const std::string& what,
+                        const std::vector<JsonField>& shape);
 
 // Coverage, manifest and play results of a scenario set.
 ojson scenario_section(const std::filesystem::path& dir, const std::filesystem::path& play_file,

@@ -26,7 +26,8 @@ constexpr std::size_t max_violations = 5000;
 
 // report.json where it is (convert writes it; a folder from elsewhere may lack it).
 ojson optional_json(const fs::path& file) {
-    return fs::is_regular_file(file) ? detail::read_json_file(file, "convert report") : ojson::object();
+    return fs::is_regular_file(file) ? detail::read_checked_json(file, "convert report", detail::convert_report_shape())
+                                     : ojson::object();
 }
 
 // As `railodd profile` chooses it: the option, else the file the profile was

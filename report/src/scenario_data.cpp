@@ -119,24 +119,12 @@ ojson ratio_part(const ojson& j, std::initializer_list<const char*> keys) {
 
 } // namespace
 
-ojson read_json_file(const std::filesystem::path& file, const std::string& what) {
-    if (!std::filesystem::is_regular_file(file)) {
-        throw InputError(file.string(), "no such file (" + what + ")");
-    }
-    std::ifstream in(file, std::ios::binary);
-    try {
-        return ojson::parse(in);
-    } catch (const std::exception& e) {
-        throw InputError(file.string(), std::string{"not valid JSON ("} + what + "): " + e.what());
-    }
-}
-
 ojson scenario_section(const std::filesystem::path& dir, const std::filesystem::path& play_file, const RoadData& roads) {
-    const ojson coverage = read_json_file(dir / "coverage.json", "scenario coverage");
-    const ojson manifest = read_json_file(dir / "manifest.json", "scenario manifest");
+    const ojson coverage = read_checked_json(dir / "coverage.json", "scenario coverage", coverage_shape());
+    const ojson manifest = read_checked_json(dir / "manifest.json", "scenario manifest", manifest_shape());
     std::optional<ojson> play;
     if (!play_file.empty()) {
-        play = read_json_file(play_file, "play results");
+        play = read_checked_json(play_file, "play results", play_shape());
     }
     ojson templates = ojson::array();
     for (const auto& t : coverage.value("templates", ojson::array())) {

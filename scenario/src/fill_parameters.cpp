@@ -8,6 +8,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <set>
 #include <numbers>
 
 namespace railodd::scenario {
@@ -81,21 +82,6 @@ void declare_environment(ConcreteScenario& sc, const std::string& element_id, co
     }
 }
 
-// "signal_aspect" -> "SignalAspect": OpenSCENARIO parameter names in the writer's style.
-std::string camel(const std::string& name) {
-    std::string out;
-    bool up = true;
-    for (const char c : name) {
-        if (c == '_' || c == '-' || c == ' ') {
-            up = true;
-            continue;
-        }
-        out += up ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
-        up = false;
-    }
-    return out;
-}
-
 // A degraded mode's settings: those with an OpenSCENARIO mapping change the
 // environment, the others are carried as conditions; all are recorded as the
 // ODD values the scenario exercises.
@@ -117,7 +103,7 @@ void apply_mode(const TemplateContext& ctx, const DegradedMode& m, ScenarioRecor
             const std::string leaf = set.element.substr(set.element.rfind('/') + 1);
             const bool says_it = leaf.size() >= set.attribute.size() &&
                                  leaf.compare(leaf.size() - set.attribute.size(), set.attribute.size(), set.attribute) == 0;
-            declare(sc, camel(says_it ? leaf : leaf + " " + set.attribute).c_str(), "string", set.value,
+            declare(sc, osc_parameter_name(says_it ? leaf : leaf + " " + set.attribute).c_str(), "string", set.value,
                     ParameterRole::mode_setting);
             sc.conditions.emplace_back(set.element + " " + set.attribute, set.value);
         }
@@ -127,6 +113,35 @@ void apply_mode(const TemplateContext& ctx, const DegradedMode& m, ScenarioRecor
 }
 
 } // namespace
+
+std::string osc_parameter_name(const std::string& name) {
+    std::string out;
+    bool up = true;
+    for (const char c : name) {
+        if (c == '_' || c == '-' || c == ' ') {
+            up = true;
+            continue;
+        }
+        out += up ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+        up = false;
+    }
+    return out;
+}
+
+bool is_reserved_parameter(const std::string& osc_name, const std::vector<std::string>& actors) {
+    static const std::set<std::string> fixed_names = {
+        pn::ego_speed, pn::time_of_day, pn::sun_elevation, pn::sun_azimuth, pn::cloud_cover, pn::fog_visual_range,
+        pn::precipitation_type, pn::precipitation_intensity, pn::friction_scale, "DegradedMode"};
+    if (fixed_names.contains(osc_name)) {
+        return true;
+    }
+    for (const auto& a : actors) {
+        if (osc_name == a + "Asset" || osc_name == a + "Speed") {
+            return true;
+        }
+    }
+    return false;
+}
 
 void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed& speed, ScenarioRecord& rec) {
     ConcreteScenario& sc = rec.scenario;
@@ -172,7 +187,7 @@ void fill_parameters(const TemplateContext& ctx, const Row& row, const EgoSpeed&
         case ParameterKind::choice:
             rec.values.emplace_back(p.name, raw);
             rec.raw.emplace_back(p.name, raw);
-            declare(sc, camel(p.name).c_str(), "string", raw, ParameterRole::choice);
+            declare(sc, osc_parameter_name(p.name).c_str(), "string", raw, ParameterRole::choice);
             sc.conditions.emplace_back(p.name, raw);
             break;
         case ParameterKind::degraded_mode: {

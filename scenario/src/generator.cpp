@@ -79,6 +79,21 @@ Validity validity(const TemplateContext& ctx) {
     };
 }
 
+// --count caps every strategy's rows per template, as its help says; without
+// it, more than max_count_per_template rows (a cover or pairwise array of two
+// parameters of a thousand values each has a million) are refused with their
+// number, as `full`'s are.
+std::vector<Row> capped(std::vector<Row> rows, const GenerateOptions& o, const std::string& where) {
+    if (o.count > 0 && rows.size() > o.count) {
+        rows.resize(o.count);
+    } else if (o.count == 0 && rows.size() > max_count_per_template) {
+        throw InputError(where, std::string{"the "} + to_string(o.strategy) + " strategy gives " +
+                                    std::to_string(rows.size()) + " rows, more than " +
+                                    std::to_string(max_count_per_template) + " (give --count N, or fewer values)");
+    }
+    return rows;
+}
+
 std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity& valid, const GenerateOptions& o,
                           const std::string& where, TemplateRun& run) {
     std::vector<Row> rows;
@@ -92,10 +107,7 @@ std::vector<Row> rows_for(const std::vector<std::size_t>& sizes, const Validity&
     } catch (const std::length_error& e) {
         throw InputError(where, std::string{e.what()} + " (use --strategy pairwise or random, or --max-anchors)");
     }
-    if (o.count > 0 && rows.size() > o.count) {
-        rows.resize(o.count);
-    }
-    return rows;
+    return capped(std::move(rows), o, where);
 }
 
 std::string scenario_id(const std::string& tmpl, std::size_t n) {
@@ -265,7 +277,7 @@ Generation generate(const odd::OddProfile& profile, const TemplateSet& templates
             if (chosen[k].empty() && first != feasible[k].end()) {
                 chosen[k].push_back(static_cast<std::size_t>(first - feasible[k].begin()));
             }
-            rows = cover_rows(run.sizes, valid, chosen[k]);
+            rows = capped(cover_rows(run.sizes, valid, chosen[k]), options, where + ": template '" + t.id + "'");
             cover_figures(run, valid, rows);
         } else {
             rows = rows_for(run.sizes, valid, options, where + ": template '" + t.id + "'", run);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <set>
 #include <string_view>
 
@@ -43,6 +44,9 @@ bool number(std::string_view v, double& out) {
     return r.ec == std::errc{} && r.ptr == v.data() + v.size();
 }
 
+// OpenDRIVE lanes are numbered outward from the centre: a few dozen at most.
+constexpr double max_lane_id = 1000.0;
+
 } // namespace
 
 Trajectories read_trajectories(std::istream& in, const std::string& source) {
@@ -76,6 +80,11 @@ Trajectories read_trajectories(std::istream& in, const std::string& source) {
                         number(at("s"), s.s) && number(at("speed"), s.speed);
         if (!ok || at("name").empty()) {
             throw InputError(source + ":" + std::to_string(line_no), "malformed trajectory row");
+        }
+        // Cast only what is a lane id: 1e300 or NaN into an int is undefined.
+        if (!(std::abs(lane) <= max_lane_id) || lane != std::trunc(lane)) {
+            throw InputError(source + ":" + std::to_string(line_no),
+                             "lane id '" + std::string{at("laneId")} + "' is not a lane number");
         }
         s.lane_id = static_cast<int>(lane);
         s.road_id = std::string{at("roadId")};

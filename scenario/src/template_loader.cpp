@@ -2,6 +2,7 @@
 // Every name in a template (element, attribute, value, placeholder, actor,
 // asset) is resolved here, so that generation never meets an unknown one.
 #include "template_loader.hpp"
+#include "attribute_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +102,13 @@ const odd::Attribute& TemplateLoader::attribute(const YAML::Node& at, const odd:
     const odd::Attribute* a = tax_.attribute(e, name);
     yaml::require(file_, at, a != nullptr, what + ": element '" + e.path + "' has no attribute '" + name + "'");
     return *a;
+}
+
+double TemplateLoader::in_range(const YAML::Node& v, double lo, double hi, const std::string& what) {
+    const double x = yaml::number(file_, v, what);
+    yaml::require(file_, v, x >= lo && x <= hi,
+                  what + " must be from " + format_number(lo) + " to " + format_number(hi) + ", not " + v.Scalar());
+    return x;
 }
 
 std::vector<std::string> TemplateLoader::value_list(const YAML::Node& v, const std::string& what) {
@@ -215,12 +223,12 @@ ActorTemplate TemplateLoader::actor(const YAML::Node& node, const Template& t, c
     if (node["place"]) a.place = lateral(node["place"], w + ": 'place'");
     if (node["along_m"]) a.along_m = yaml::number(file_, node["along_m"], w + ": 'along_m'");
     if (node["move_to"]) a.move_to = lateral(node["move_to"], w + ": 'move_to'");
-    if (node["move_speed_kmh"]) a.move_speed_kmh = yaml::number(file_, node["move_speed_kmh"], w + ": 'move_speed_kmh'");
-    if (node["trigger_before_m"]) a.trigger_before_m = yaml::number(file_, node["trigger_before_m"], w + ": 'trigger_before_m'");
+    if (node["move_speed_kmh"]) a.move_speed_kmh = in_range(node["move_speed_kmh"], 0.1, 500.0, w + ": 'move_speed_kmh'");
+    if (node["trigger_before_m"]) a.trigger_before_m = in_range(node["trigger_before_m"], 0.0, 1e5, w + ": 'trigger_before_m'");
     if (node["hazard_before_m"]) {
         yaml::require(file_, node["hazard_before_m"], !node["trigger_before_m"],
                       w + ": give 'hazard_before_m' or 'trigger_before_m', not both");
-        a.hazard_before_m = yaml::number(file_, node["hazard_before_m"], w + ": 'hazard_before_m'");
+        a.hazard_before_m = in_range(node["hazard_before_m"], 0.0, 1e5, w + ": 'hazard_before_m'");
     }
     yaml::require(file_, node, !a.move_to || a.move_speed_kmh > 0.0, w + ": 'move_to' needs a positive 'move_speed_kmh'");
     yaml::require(file_, node["place"] ? node["place"] : node,

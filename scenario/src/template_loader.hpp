@@ -38,7 +38,7 @@ private:
     void ego_speed_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p);
     void asset_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p);
     void map_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p);
-    void choice_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p);
+    void choice_parameter(const YAML::Node& spec, const Template& t, const std::string& w, ParameterDomain& p);
     void mode_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p);
     ModeSetting mode_setting(const YAML::Node& node, const std::string& what);
 
@@ -50,6 +50,10 @@ private:
                                     const std::string& what);
 
     std::vector<std::string> value_list(const YAML::Node& v, const std::string& what);
+
+    // A number in [lo, hi]: a negative distance or a speed written as "0"
+    // in the .xosc makes a scenario that cannot play as its template says.
+    double in_range(const YAML::Node& v, double lo, double hi, const std::string& what);
 
     ElementMatch match(const YAML::Node& node, const std::string& what, std::initializer_list<std::string_view> keys);
 

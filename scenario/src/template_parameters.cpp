@@ -108,7 +108,7 @@ ParameterDomain TemplateLoader::parameter(const std::string& name, const YAML::N
     } else if (kind == "map") {
         map_parameter(spec, t, w, p);
     } else if (kind == "choice") {
-        choice_parameter(spec, w, p);
+        choice_parameter(spec, t, w, p);
     } else if (kind == "degraded_mode") {
         mode_parameter(spec, w, p);
     } else {
@@ -192,8 +192,16 @@ void TemplateLoader::map_parameter(const YAML::Node& spec, const Template& t, co
     p.unit = attribute(spec["attribute"], element(spec, p.element, w), p.attribute, w).unit;
 }
 
-void TemplateLoader::choice_parameter(const YAML::Node& spec, const std::string& w, ParameterDomain& p) {
+void TemplateLoader::choice_parameter(const YAML::Node& spec, const Template& t, const std::string& w,
+                                      ParameterDomain& p) {
     p.kind = ParameterKind::choice;
+    std::vector<std::string> actors{"Ego"};
+    for (const auto& a : t.actors) {
+        actors.push_back(a.name);
+    }
+    const std::string osc_name = osc_parameter_name(p.name);
+    yaml::require(file_, spec, !is_reserved_parameter(osc_name, actors),
+                  w + ": its OpenSCENARIO name '" + osc_name + "' is one railodd declares itself; choose another name");
     yaml::require(file_, spec, static_cast<bool>(spec["values"]), w + ": a choice lists its 'values'");
     p.values = value_list(spec["values"], w + ": 'values'");
     std::set<std::string> seen;
@@ -212,6 +220,9 @@ void TemplateLoader::mode_parameter(const YAML::Node& spec, const std::string& w
                                         [&](const DegradedMode& d) { return d.id == id; });
             yaml::require(file_, spec["values"], m != set_.degraded_modes.end(),
                           w + ": '" + id + "' is not one of the file's degraded_modes");
+            yaml::require(file_, spec["values"], std::none_of(p.modes.begin(), p.modes.end(),
+                                                              [&](const DegradedMode& d) { return d.id == id; }),
+                          w + ": degraded mode '" + id + "' is listed twice");
             p.modes.push_back(*m);
         }
     } else {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
@@ -112,6 +113,37 @@ void remove_stale_staging(const fs::path& outdir) {
 }
 
 } // namespace
+
+void finish_pending_commit(const fs::path& dir) {
+    std::error_code ec;
+    if (!fs::exists(dir / journal_name, ec)) {
+        return;
+    }
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) {
+        throw OutputError(dir.string(), "cannot open the folder to finish its pending commit");
+    }
+    // A live run holding the lock with a journal there is in its commit,
+    // which takes moments (renames): wait up to 10 s for it.
+    int tries = 0;
+    while (::flock(fd, LOCK_EX | LOCK_NB) != 0 && ++tries < 100) {
+        ::usleep(100000);
+    }
+    if (tries == 100) {
+        ::close(fd);
+        throw OutputError(dir.string(), "another railodd run keeps this folder locked in its commit; try again");
+    }
+    try {
+        if (fs::exists(dir / journal_name, ec)) {
+            roll_forward(dir);
+            remove_stale_staging(dir); // the lock is ours: no live run stages there
+        }
+    } catch (...) {
+        ::close(fd);
+        throw;
+    }
+    ::close(fd); // releases the flock
+}
 
 OutputStage::OutputStage(fs::path outdir) : outdir_(std::move(outdir)) {
     if (outdir_.empty()) {
@@ -230,20 +262,40 @@ std::vector<fs::path> OutputStage::commit() {
     }
     std::sort(removals.begin(), removals.end());
     removals.erase(std::unique(removals.begin(), removals.end()), removals.end());
+    require_replaceable(moves);
     write_journal(outdir_, staging_.filename().string(), moves, removals);
     committed_ = true;
     std::vector<fs::path> written;
+    std::optional<OutputError> failed; // the first move that failed: the rest are still made
     for (const auto& name : moves) {
-        move_into_place(staging_ / name, outdir_ / name);
-        written.push_back(outdir_ / name);
+        try {
+            move_into_place(staging_ / name, outdir_ / name);
+            written.push_back(outdir_ / name);
+        } catch (const OutputError& e) {
+            failed = failed ? failed : e;
+        }
     }
     std::error_code ec;
     for (const auto& r : removals) {
         fs::remove(outdir_ / r, ec);
     }
+    // Even after a failed move: a journal left behind would make every later
+    // run into this folder retry the same move and fail the same way.
     fs::remove(outdir_ / journal_name, ec);
     fs::remove_all(staging_, ec);
+    if (failed) {
+        throw *failed;
+    }
     return written;
+}
+
+void OutputStage::require_replaceable(const std::vector<std::string>& moves) const {
+    for (const auto& name : moves) {
+        std::error_code ec;
+        if (fs::is_directory(outdir_ / name, ec) && !fs::is_directory(staging_ / name, ec)) {
+            throw OutputError((outdir_ / name).string(), "is a folder: the file this run wrote cannot replace it");
+        }
+    }
 }
 
 } // namespace railodd

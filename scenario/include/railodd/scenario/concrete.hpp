@@ -151,4 +151,13 @@ inline constexpr const char* friction_scale = "FrictionScale";
 // Per other actor NAME: NAME + "Asset" (catalog entry), NAME + "Speed" (m/s, target speed).
 } // namespace parameter_names
 
+// A template parameter's OpenSCENARIO name, in the writer's style
+// ("signal_aspect" -> "SignalAspect").
+std::string osc_parameter_name(const std::string& name);
+
+// Names railodd declares itself in every scenario (parameter_names,
+// DegradedMode, ACTORAsset and ACTORSpeed of each actor): a choice parameter
+// of one of them would be silently dropped from the .xosc.
+bool is_reserved_parameter(const std::string& osc_name, const std::vector<std::string>& actors);
+
 } // namespace railodd::scenario

@@ -34,6 +34,19 @@ class UsageError : public Error {
     using Error::Error;
 };
 
+// SIGINT or SIGTERM arrived while railodd waited for its child processes:
+// they are killed, and main() exits 128 + signal after the unwinding has
+// removed what the run had staged.
+class Interrupted : public Error {
+public:
+    explicit Interrupted(int signal)
+        : Error("", "interrupted by signal " + std::to_string(signal)), signal_(signal) {}
+    int signal() const noexcept { return signal_; }
+
+private:
+    int signal_;
+};
+
 enum ExitCode : int {
     exit_ok = 0,
     exit_usage = 1,

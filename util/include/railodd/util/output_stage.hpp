@@ -54,6 +54,9 @@ public:
     const std::filesystem::path& outdir() const noexcept { return outdir_; }
 
 private:
+    // Before the journal: a move that cannot succeed (a file onto a folder) fails the run, not the folder.
+    void require_replaceable(const std::vector<std::string>& moves) const;
+
     std::filesystem::path outdir_;
     std::filesystem::path staging_;
     std::vector<std::string> names_;
@@ -63,6 +66,13 @@ private:
     bool committed_ = false;
     bool created_ = false; // OUTDIR did not exist: removed again, empty, if nothing is committed
 };
+
+// For a command that reads `dir` (written by another command): a commit that a
+// killed run left half done there is finished first, under the folder's lock,
+// so the reader never sees a mix of two runs' files. Nothing to do, and no
+// lock taken, where there is no journal. Throws OutputError when the journal
+// cannot be carried out or a live run keeps the folder locked.
+void finish_pending_commit(const std::filesystem::path& dir);
 
 // The staging folders' prefix inside an output folder.
 inline constexpr const char* staging_prefix = ".railodd-staging-";
