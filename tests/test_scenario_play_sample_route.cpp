@@ -153,7 +153,10 @@ TEST_F(ScenarioPlaySampleRoute, BadInputIsRefused) {
     EXPECT_NE(no_player.output.find("nothing"), std::string::npos) << no_player.output;
     EXPECT_FALSE(fs::exists(empty / "play.json"));
     // A manifest whose scenario id is a path, not a file name.
-    write_file(empty / "manifest.json", R"({"scenarios": [{"id": "../escape", "ego": {}, "actors": []}]})");
+    write_file(empty / "manifest.json",
+               R"({"scenarios": [{"id": "../escape", "ego": {"start": {"road_id": "1", "lane_id": -1, "s": 0},
+                   "route_roads": ["1"], "length_m": 100, "width_m": 3}, "anchor": {"road_id": "1", "s": 10},
+                   "actors": []}]})");
     const auto escape = run_railodd("play " + quoted(empty) + " --player " + quoted(esmini().empty() ? fs::path{"/bin/true"} : esmini()));
     if (!esmini().empty()) {
         EXPECT_EQ(escape.exit_code, 2) << escape.output;
