@@ -258,6 +258,7 @@ int PlayCommand::run() {
     const std::vector<play::LaneLine> lanes =
         opt_.plot ? map_lanes(manifest, dir, scratch.dir, (fs::path{opt_.player}.parent_path() / "odrplot").string())
                   : std::vector<play::LaneLine>{};
+    const TargetPlaces places(manifest, dir);
     ojson report;
     report["railodd"] = {{"format", "play_report"}, {"format_version", 1}};
     report["player"] = {{"path", opt_.player}, {"version", tasks.empty() ? "" : player_version(tasks[0].steps[0].log)}};
@@ -270,7 +271,7 @@ int PlayCommand::run() {
         const auto& sc = manifest["scenarios"][i];
         const std::string id = sc["id"].get<std::string>();
         Played p = analyse_one(sc, outcomes[i], tasks[i].steps[1].args.back(), "play/" + id + ".csv",
-                               tasks[i].steps[0].log, po, opt_.plot ? &lanes : nullptr);
+                               tasks[i].steps[0].log, po, opt_.plot ? &lanes : nullptr, places);
         if (!p.svg.empty()) {
             stage.write_text("play/" + id + ".svg", p.svg);
         }

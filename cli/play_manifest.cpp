@@ -59,6 +59,7 @@ const std::vector<JsonField>& manifest_fields() {
         {"scenarios/*/actors/*/move_to", K::string, false},
         {"scenarios/*/actors/*/target", K::object, false},
         {"scenarios/*/actors/*/target/road_id", K::string},
+        {"scenarios/*/actors/*/target/lane_id", K::integer, false},
         {"scenarios/*/actors/*/target/s", K::number},
         {"scenarios/*/actors/*/target/offset", K::number, false},
         {"scenarios/*/actors/*/hazard_before_m", K::number, false},

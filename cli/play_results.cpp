@@ -50,7 +50,8 @@ void add_analysis(Played& p, const play::Analysis& a, const play::PlayerLog& pl)
 } // namespace
 
 Played analyse_one(const ojson& sc, const TaskOutcome& outcome, const fs::path& csv, const std::string& csv_name,
-                   const fs::path& log, const play::Options& o, const std::vector<play::LaneLine>* lanes) {
+                   const fs::path& log, const play::Options& o, const std::vector<play::LaneLine>* lanes,
+                   const TargetPlaces& places) {
     Played p;
     p.entry = {{"id", sc["id"]}, {"template", sc.value("template", "")}, {"ran", outcome.ok}};
     if (!outcome.ok) {
@@ -73,7 +74,8 @@ Played analyse_one(const ojson& sc, const TaskOutcome& outcome, const fs::path& 
         p.entry["passed"] = false;
         return p;
     }
-    const nlohmann::json scenario = nlohmann::json::parse(sc.dump());
+    nlohmann::json scenario = nlohmann::json::parse(sc.dump());
+    places.place(scenario);
     const play::Analysis a = play::analyse(scenario, tr, pl, o);
     if (lanes) {
         p.svg = play::plot_svg(scenario, tr, *lanes, a);

@@ -3,6 +3,7 @@
 // (ran or not, the checks on its recording, the criticality), play.txt, and
 // the play outcome added to the set's manifest and coverage.
 #include "batch_runner.hpp"
+#include "play_targets.hpp"
 
 #include "railodd/scenario/play.hpp"
 #include "railodd/util/output_stage.hpp"
@@ -28,7 +29,8 @@ struct Played {
 // `csv_name`: the recording as named in the set (play/ID.csv).
 Played analyse_one(const nlohmann::ordered_json& sc, const TaskOutcome& outcome, const std::filesystem::path& csv,
                    const std::string& csv_name, const std::filesystem::path& log,
-                   const scenario::play::Options& o, const std::vector<scenario::play::LaneLine>* lanes);
+                   const scenario::play::Options& o, const std::vector<scenario::play::LaneLine>* lanes,
+                   const TargetPlaces& places);
 
 std::string text_report(const nlohmann::ordered_json& report);
 

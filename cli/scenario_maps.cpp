@@ -1,6 +1,7 @@
 #include "scenario_maps.hpp"
 
 #include "railodd/xodr_check/map_crop.hpp"
+#include "railodd/xodr_check/map_lines.hpp"
 
 #include <map>
 #include <set>
@@ -38,6 +39,16 @@ std::set<std::string> scenario_roads(const scenario::ConcreteScenario& sc) {
 }
 
 } // namespace
+
+std::vector<scenario::ConnectingRoad> connecting_roads(const std::filesystem::path& map) {
+    std::vector<scenario::ConnectingRoad> out;
+    for (const auto& r : xodr_check::read_map_lines(map).roads) {
+        if (r.junction != "-1" && !r.predecessor.empty() && !r.successor.empty()) {
+            out.push_back({r.id, r.junction, r.predecessor, r.successor, r.length});
+        }
+    }
+    return out;
+}
 
 double corridor_for(double requested, const std::filesystem::path& map) {
     if (requested >= 0.0) {

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace railodd::cli {
 
@@ -20,6 +21,10 @@ constexpr double corridor_default_m = 200.0;
 // The corridor to cut at: `requested` where given (>= 0; 0: whole map), else
 // the default for the map's size.
 double corridor_for(double requested, const std::filesystem::path& map);
+
+// The map's junction connecting roads, what each links (routes through a
+// switch take the one that leads where they go; GenerateOptions).
+std::vector<scenario::ConnectingRoad> connecting_roads(const std::filesystem::path& map);
 
 // Writes maps/corridor_N.xodr into the stage, one per distinct set of roads
 // the scenarios run on (the ego's route, every actor's start, path and

@@ -223,6 +223,7 @@ int ScenariosCommand::run() {
     gen.map_file = fs::absolute(xodr).lexically_normal().lexically_relative(out).generic_string();
     gen.date = date;
     gen.target = target_;
+    gen.connecting_roads = connecting_roads(xodr);
     scenario::Generation generation = scenario::generate(profile, templates, catalog, taxonomy, gen);
     if (const double corridor = corridor_for(opt_.map_corridor_m, xodr); corridor > 0.0) {
         cut_scenario_maps(stage, xodr, corridor, generation);

@@ -216,3 +216,25 @@ TEST(ScenarioPlay, ReadsRecordingsAndLogs) {
     EXPECT_NE(l.errors[0].find("Entity X"), std::string::npos);
     EXPECT_EQ(l.warnings.size(), 1u) << "distinct warnings";
 }
+
+// Krems: a road user's target on a crossing road cut back beside the track;
+// the player reported it on the other road there (2382, at its own s). Placed
+// on the map (target x, y, as play does from the scenario's map), the target
+// is judged by where the actor ended, not by the road the player names.
+TEST(ScenarioPlay, ATargetPlacedOnTheMapIsJudgedWhereTheActorEnds) {
+    auto rows = crossing_run();
+    for (auto& r : rows) {
+        if (r.name == "Car" && r.y > -1.0) {
+            r.road = "2382";
+            r.s = 3.0;
+        }
+    }
+    json m = crossing_manifest();
+    m["actors"][0].erase("move_to"); // not the on-track rule: the target alone
+    EXPECT_FALSE(passed(analyse(m, read(rows), {}, {}), "Car reaches its target"));
+    m["actors"][0]["target"]["x"] = 600.0;
+    m["actors"][0]["target"]["y"] = 0.8;
+    EXPECT_TRUE(passed(analyse(m, read(rows), {}, {}), "Car reaches its target"));
+    m["actors"][0]["target"]["y"] = 4.0;
+    EXPECT_FALSE(passed(analyse(m, read(rows), {}, {}), "Car reaches its target"));
+}

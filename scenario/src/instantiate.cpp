@@ -5,6 +5,7 @@
 
 #include "attribute_values.hpp"
 #include "environment.hpp"
+#include "junction_route.hpp"
 #include "target_support.hpp"
 
 #include <algorithm>
@@ -165,10 +166,28 @@ std::optional<std::vector<LanePlacement>> crossing_road_path(const TemplateConte
     return path;
 }
 
+// Where an off-road actor (a person, an animal) stepping across the track
+// ends: a metre on in the ego's direction of travel (a player may measure a
+// polyline's progress along s: esmini 3.6 ends a path with no progress in s
+// at once, unmoved), or a metre back where the road ends within it (Munich:
+// a 13.3 m road; esmini truncates an s beyond a road's end and says so).
+LanePlacement across_target(const TemplateContext& ctx, const Anchor& a, double chainage, const LanePlacement& on_track) {
+    for (const double step : {across_step_m, -across_step_m}) {
+        const auto p = ctx.lines.at(a.line, chainage + step);
+        if (p && p->road_id == on_track.road_id && p->lane_id == on_track.lane_id) {
+            return *p;
+        }
+    }
+    LanePlacement target = on_track;
+    target.s += on_track.reversed ? -across_step_m : across_step_m;
+    return target;
+}
+
 Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asset& asset, const Anchor& a, double side) {
     Actor actor = actor_from(asset, t.name, entry_name(asset, ctx.options.target));
     actor.place = to_string(t.place);
-    const auto at = ctx.lines.at(a.line, std::clamp(a.chainage + t.along_m, a.start_chainage, a.end_chainage));
+    const double chainage = std::clamp(a.chainage + t.along_m, a.start_chainage, a.end_chainage);
+    const auto at = ctx.lines.at(a.line, chainage);
     actor.start = at.value_or(a.place);
     actor.start.offset = lateral_offset(t.place, side);
     const LanePlacement on_track = actor.start;
@@ -187,12 +206,9 @@ Actor place_actor(const TemplateContext& ctx, const ActorTemplate& t, const Asse
             actor.path = *road;
         } else {
             // Across the track: off-road actors (people, animals) step onto
-            // or off it, a metre on in the ego's direction of travel (a
-            // player may measure a polyline's progress along s: esmini 3.6
-            // ends a path with no progress in s at once, unmoved).
-            LanePlacement target = on_track;
+            // or off it.
+            LanePlacement target = across_target(ctx, a, chainage, on_track);
             target.offset = lateral_offset(*t.move_to, side);
-            target.s += on_track.reversed ? -across_step_m : across_step_m;
             actor.path = {actor.start, target};
         }
         actor.target = actor.path.back();
@@ -353,6 +369,7 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
     sc.ego = actor_from(ego_asset, "Ego", entry_name(ego_asset, ctx.options.target));
     sc.ego.start = ctx.lines.at(a.line, a.start_chainage).value_or(a.place);
     sc.ego.route = ctx.lines.waypoints(a.line, a.start_chainage, a.end_chainage);
+    take_connecting_roads(sc.ego.route, ctx.options.connecting_roads);
     if (!target_support::usable(ctx.options.target, "AssignRouteAction", target_support::Where::init) &&
         !target_support::usable(ctx.options.target, "AssignRouteAction", target_support::Where::story)) {
         sc.ego_track = track_samples(ctx.lines, a.line, a.start_chainage, a.end_chainage);

@@ -190,21 +190,26 @@ void road_user_checks(Run& r, const json& actor, const std::vector<Sample>& v) {
     r.check(name + " stays on its road's lane", left.empty(), left);
 }
 
-// At the target's road and s, or, for a move onto the track, on the track
-// as the ego recorded it: where roads overlap (a parallel road, a crossing
-// road cut short) the player may report the other road's id.
+// At the target: within 1.5 m of its place on the map where play placed it
+// (target x, y), else at its road and s as the player reports them; or, for
+// a move onto the track, on the track as the ego recorded it. Where roads
+// overlap (a parallel road, a crossing road cut short) the player may report
+// the other road's id: the map's place does not depend on it.
 void target_check(Run& r, const json& actor, const std::vector<Sample>& v, const Path& path) {
     const json& target = actor.at("target");
     const Sample& last = v.back();
-    bool there = last.road_id == target.at("road_id").get<std::string>() &&
-                 std::abs(last.s - target.at("s").get<double>()) <= 1.5;
+    const bool placed = target.contains("x") && target.contains("y");
+    const double miss = placed ? std::hypot(last.x - target.at("x").get<double>(), last.y - target.at("y").get<double>())
+                               : std::abs(last.s - target.at("s").get<double>());
+    bool there = miss <= 1.5 && (placed || last.road_id == target.at("road_id").get<std::string>());
     if (!there && actor.value("move_to", "") == "on_track" && !path.empty()) {
         const auto foot = path.project(last.x, last.y);
         there = foot.chainage > 0.0 && foot.chainage < path.length() &&
                 foot.distance <= std::abs(target.value("offset", 0.0)) + 0.5;
     }
     r.check(actor.at("name").get<std::string>() + " reaches its target", there,
-            "ends on road " + last.road_id + " s " + fmt(last.s, 1));
+            "ends on road " + last.road_id + " s " + fmt(last.s, 1) +
+                (placed ? ", " + fmt(miss, 1) + " m from its place on the map" : ""));
 }
 
 // An actor timed by its template (hazard_before_m) is at its target when

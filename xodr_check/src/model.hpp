@@ -18,6 +18,7 @@ inline constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 struct Lane {
     int id = 0;
     std::string type;
+    std::vector<Elevation> widths; // s: @sOffset
 };
 
 struct LaneSection {
@@ -69,6 +70,7 @@ struct Road {
     std::vector<GeometryRecord> geometries;
     std::vector<Elevation> elevations;
     std::vector<LaneSection> sections;
+    std::vector<Elevation> lane_offsets;
     std::vector<RoadPoint> points;
     std::vector<Switch> switches;
     bool rail = false; // every non-centre lane is "rail" or "tram"

@@ -131,13 +131,25 @@ GeometryRecord read_geometry(Reader& r, const pugi::xml_node& g, bool& known) {
     return rec;
 }
 
+// One a + b t + c t^2 + d t^3 record starting at its attribute `at`.
+Elevation cubic(Reader& r, const pugi::xml_node& n, const char* at) {
+    return {r.num(n, at, 0.0), r.num(n, "a", 0.0), r.num(n, "b", 0.0), r.num(n, "c", 0.0), r.num(n, "d", 0.0)};
+}
+
 void read_lanes(Reader& r, const pugi::xml_node& lanes, Road& road) {
+    for (const auto o : lanes.children("laneOffset")) {
+        road.lane_offsets.push_back(cubic(r, o, "s"));
+    }
     for (const auto sec : lanes.children("laneSection")) {
         LaneSection ls;
         ls.s = r.num(sec, "s", 0.0);
         for (const char* side : {"left", "center", "right"}) {
             for (const auto lane : sec.child(side).children("lane")) {
-                ls.lanes.push_back({r.integer(lane, "id"), lane.attribute("type").value()});
+                Lane l{r.integer(lane, "id"), lane.attribute("type").value(), {}};
+                for (const auto w : lane.children("width")) {
+                    l.widths.push_back(cubic(r, w, "sOffset"));
+                }
+                ls.lanes.push_back(std::move(l));
             }
         }
         road.sections.push_back(std::move(ls));
@@ -217,8 +229,7 @@ Road read_road(Reader& r, const pugi::xml_node& n) {
         }
     }
     for (const auto e : n.child("elevationProfile").children("elevation")) {
-        road.elevations.push_back(
-            {r.num(e, "s", 0.0), r.num(e, "a", 0.0), r.num(e, "b", 0.0), r.num(e, "c", 0.0), r.num(e, "d", 0.0)});
+        road.elevations.push_back(cubic(r, e, "s"));
     }
     read_lanes(r, n.child("lanes"), road);
     read_points(r, n, road);

@@ -19,6 +19,14 @@
 
 namespace railodd::scenario {
 
+// A junction's connecting road (a switch's leg in the map): what it links.
+struct ConnectingRoad {
+    std::string id;
+    std::string junction;
+    std::string from, to; // its predecessor and successor roads
+    double length = 0.0;
+};
+
 struct GenerateOptions {
     Strategy strategy = Strategy::cover;
     std::size_t count = 0;     // random: rows per template (required); full / pairwise: 0 = all
@@ -31,6 +39,11 @@ struct GenerateOptions {
     // samples the ego's run where the target cannot route it
     // (ConcreteScenario::ego_track).
     Target target = Target::esmini;
+    // The map's connecting roads. The profile runs a track on through its
+    // switch's main-track connecting road; a route that leaves the switch on
+    // the other leg takes the connecting road to it instead (the player
+    // routes by road: Munich's ego left its route there).
+    std::vector<ConnectingRoad> connecting_roads;
 };
 
 // One ODD element and attribute value a scenario exercises.

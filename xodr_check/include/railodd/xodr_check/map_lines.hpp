@@ -8,6 +8,7 @@
 #include "railodd/xodr_check/geometry_eval.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,18 +23,37 @@ struct Elevation {
     }
 };
 
+// One lane's widths: w(ds) = a + b t + c t^2 + d t^3, t = ds - s, ds from
+// its lane section's start (Elevation's form, s being @sOffset).
+struct MapLane {
+    int id = 0;
+    std::vector<Elevation> widths;
+};
+
+struct MapSection {
+    double s = 0.0;
+    std::vector<MapLane> lanes;
+};
+
 struct MapRoad {
     std::string id;
     std::string name;
     std::string junction = "-1";
+    std::string predecessor, successor; // linked roads' ids; empty where a junction or nothing is linked
     double length = 0.0;
     bool rail = false;   // every non-centre lane is "rail" or "tram"
     std::string osm_ids; // <userData code="osm"> value, e.g. "way:1,way:2"
     std::vector<GeometryRecord> geometries;
     std::vector<Elevation> elevations;
+    std::vector<Elevation> lane_offsets; // <laneOffset> records
+    std::vector<MapSection> sections;
 
     // The reference line's pose at s (clamped to [0, length]).
     Pose pose(double s) const;
+    // Where OpenSCENARIO's LanePosition (road, lane, s, offset from the
+    // lane's centre, left +) is on the map: x, y and the road's heading;
+    // nullopt where the lane is not in the section at s.
+    std::optional<Pose> lane_position(int lane_id, double s, double offset) const;
     // The elevation at s; 0 without an elevation profile.
     double elevation(double s) const;
 };

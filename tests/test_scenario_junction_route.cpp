@@ -1,0 +1,55 @@
+// A route through a switch takes the connecting road that leads where it
+// goes (scenario/src/junction_route.cpp), as the player routes by road.
+#include "junction_route.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace railodd::scenario;
+
+namespace {
+
+// Munich's switch: junction 6905 links road 84 to 16 by 199 and to 37 by
+// 201 (both 20 m), and road 88 to 16 by 200 (5.9 m).
+const std::vector<ConnectingRoad> roads{{"199", "6905", "84", "16", 20.0},
+                                        {"200", "6905", "88", "16", 5.9},
+                                        {"201", "6905", "84", "37", 20.0}};
+
+std::vector<LanePlacement> route(std::vector<std::pair<std::string, double>> at) {
+    std::vector<LanePlacement> out;
+    for (const auto& [road, s] : at) {
+        LanePlacement p;
+        p.road_id = road;
+        p.s = s;
+        out.push_back(p);
+    }
+    return out;
+}
+
+} // namespace
+
+TEST(ScenarioJunctionRoute, TheOtherLegsConnectingRoadIsTaken) {
+    auto r = route({{"84", 42.0}, {"199", 10.0}, {"37", 9.0}});
+    take_connecting_roads(r, roads);
+    EXPECT_EQ(r[1].road_id, "201");
+    EXPECT_DOUBLE_EQ(r[1].s, 10.0);
+    EXPECT_EQ(r[0].road_id, "84");
+    EXPECT_EQ(r[2].road_id, "37");
+}
+
+TEST(ScenarioJunctionRoute, AgainstTheConnectingRoadsDirection) {
+    auto r = route({{"37", 9.0}, {"199", 5.0}, {"84", 42.0}});
+    take_connecting_roads(r, roads);
+    EXPECT_EQ(r[1].road_id, "201");
+    EXPECT_DOUBLE_EQ(r[1].s, 5.0);
+}
+
+TEST(ScenarioJunctionRoute, ARouteThatIsLinkedStaysAndOneWithoutALinkToo) {
+    auto linked = route({{"84", 42.0}, {"199", 10.0}, {"16", 9.0}});
+    take_connecting_roads(linked, roads);
+    EXPECT_EQ(linked[1].road_id, "199");
+    // No connecting road of the junction links 88 to 37: the route is left
+    // as it is (the play check says where the train went).
+    auto unlinked = route({{"88", 3.0}, {"200", 2.0}, {"37", 9.0}});
+    take_connecting_roads(unlinked, roads);
+    EXPECT_EQ(unlinked[1].road_id, "200");
+}
