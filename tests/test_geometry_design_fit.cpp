@@ -147,3 +147,15 @@ TEST(DesignFit, TheSearchKeepsTheLastPassAsARival) {
     const geometry::FitResult fit = geometry::fit_alignment(nodes, start, std::nullopt, design_search());
     EXPECT_LT(fit.quality.followed_max_m, 2.5);
 }
+
+// A Cologne branch whose switch node was mapped 2.65 m off the through
+// track's design: its tie (the through track's pose there) is where the
+// branch meets the switch, so the branch is fitted and judged from there,
+// not from the mapped node (2.65 m off before: a corner chain).
+TEST(DesignFit, ATiedEndStartsWhereItsTieIs) {
+    const std::vector<geometry::Point> nodes{{-2838.533, -2981.243}, {-2776.479, -2927.890}, {-2686.861, -2860.622}};
+    const geometry::Pose start{-2837.031, -2983.427, 0.602600, 0.00798899};
+    const geometry::FitResult fit = geometry::fit_alignment(nodes, start, std::nullopt, design_search());
+    EXPECT_LT(fit.quality.followed_max_m, 0.5);
+    EXPECT_NEAR(fit.quality.max_m, 2.65, 0.05); // the mapped node is still measured where it is
+}
