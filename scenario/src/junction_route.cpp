@@ -5,21 +5,19 @@
 #include "junction_route.hpp"
 
 #include <algorithm>
-#include <map>
 
 namespace railodd::scenario {
 
 void take_connecting_roads(std::vector<LanePlacement>& route, const std::vector<ConnectingRoad>& roads) {
-    std::map<std::string, const ConnectingRoad*> by_id;
-    for (const ConnectingRoad& r : roads) {
-        by_id.emplace(r.id, &r);
-    }
     for (std::size_t i = 1; i + 1 < route.size(); ++i) {
-        const auto it = by_id.find(route[i].road_id);
-        if (it == by_id.end()) {
+        // A scan, not an index: a route has a few dozen waypoints, and an
+        // index built per scenario would cost more than it saves.
+        const auto it = std::find_if(roads.begin(), roads.end(),
+                                     [&](const ConnectingRoad& r) { return r.id == route[i].road_id; });
+        if (it == roads.end()) {
             continue;
         }
-        const ConnectingRoad& own = *it->second;
+        const ConnectingRoad& own = *it;
         const std::string& before = route[i - 1].road_id;
         const std::string& after = route[i + 1].road_id;
         // Travelled the way its own road runs, or against it.

@@ -248,18 +248,27 @@ double first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
     return scan.tested < 12 ? 0.3 : std::clamp(scan.noise_sigma_m, 0.05, 5.0);
 }
 
-// What a pass's design costs at one noise scale: each node's squared
-// distance to its alignment in units of it, capped at the biweight cut (a
-// stray costs every design the same), and its parameters. Measured on the
-// map, not in the pass's frame, whose linearisation differs from pass to
-// pass. A frame moved onto a design that missed a stretch can lead the next
-// pass further off (a 4 km Cologne chain: 7, 22, 70, 431 m); then the last
-// pass that was no worse stands.
-double pass_cost(const DesignPass& pass, const std::vector<Point2>& p, double sigma) {
-    const IndexedAlignment ia(pass.alignment);
-    double c = 0.0;
+// Each node's distance to a pass's alignment on the map, not in the pass's
+// frame, whose linearisation differs from pass to pass.
+std::vector<double> map_distances(const Alignment& a, const std::vector<Point2>& p) {
+    const IndexedAlignment ia(a);
+    std::vector<double> d;
+    d.reserve(p.size());
     for (const Point2& q : p) {
-        const double d = ia.project(q.x, q.y).distance;
+        d.push_back(ia.project(q.x, q.y).distance);
+    }
+    return d;
+}
+
+// What a pass's design costs at one noise scale, from its nodes' distances
+// on the map: each squared in units of it, capped at the biweight cut (a
+// stray costs every design the same), and its parameters. A frame moved onto
+// a design that missed a stretch can lead the next pass further off (a 4 km
+// Cologne chain: 7, 22, 70, 431 m); then the last pass that was no worse
+// stands.
+double pass_cost(const DesignPass& pass, const std::vector<double>& on_map, double sigma) {
+    double c = 0.0;
+    for (const double d : on_map) {
         c += std::min(d * d / (sigma * sigma), biweight_cut * biweight_cut);
     }
     return c + pass.options.parameter_penalty * static_cast<double>(parameters(pass.design));
@@ -304,6 +313,7 @@ FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
     DesignPass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr, true);
+    std::vector<double> on_map = map_distances(pass.alignment, p);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
@@ -311,12 +321,14 @@ FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose
         const FrameDesign previous = pass.design;
         DesignPass tried = run_pass(alignment_reference(pass.alignment, reference_step_m), p, w, next, start, end,
                                     &previous, round == 0);
-        if (pass_cost(tried, p, next) > pass_cost(pass, p, next) + pass.options.parameter_penalty) {
+        std::vector<double> tried_on_map = map_distances(tried.alignment, p);
+        if (pass_cost(tried, tried_on_map, next) > pass_cost(pass, on_map, next) + pass.options.parameter_penalty) {
             break;
         }
         sigma = next;
         weight = std::move(w);
         pass = std::move(tried);
+        on_map = std::move(tried_on_map);
         if (settled) {
             break;
         }
