@@ -31,18 +31,21 @@ double z_of(const FrameDesign& d, double t) {
     return z;
 }
 
-// line 200, transition 60 to 1/300, arc 150, transition 60, line 230.
-FrameDesign known() {
-    FrameDesign d;
-    d.start = {0.3, 0.01, 0.0};
-    const double k = 1.0 / 300.0;
-    d.elements = {{ElementKind::line, 0, 200, 0, 0},
-                  {ElementKind::transition, 200, 260, 0, k},
-                  {ElementKind::arc, 260, 410, k, k},
-                  {ElementKind::transition, 410, 470, k, 0},
-                  {ElementKind::line, 470, 700, 0, 0}};
-    return d;
+// A curve between two lines: line to knot a, transition to b reaching
+// curvature k, arc to c, transition to d, line to e.
+FrameDesign curve(FrameState start, double k, double a, double b, double c, double d, double e) {
+    FrameDesign f;
+    f.start = start;
+    f.elements = {{ElementKind::line, 0, a, 0, 0},
+                  {ElementKind::transition, a, b, 0, k},
+                  {ElementKind::arc, b, c, k, k},
+                  {ElementKind::transition, c, d, k, 0},
+                  {ElementKind::line, d, e, 0, 0}};
+    return f;
 }
+
+// line 200, transition 60 to 1/300, arc 150, transition 60, line 230.
+FrameDesign known() { return curve({0.3, 0.01, 0.0}, 1.0 / 300.0, 200, 260, 410, 470, 700); }
 
 std::vector<FrameNode> nodes_on(const FrameDesign& d, double step, double sigma, unsigned seed) {
     std::mt19937 rng(seed);
@@ -208,4 +211,61 @@ TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
         // An arc straight after a line is no railway design.
         EXPECT_TRUE(std::isinf(costs.replaced(1, 2, {{ElementKind::arc, 200, 260, 0, 0}})));
     }
+}
+
+// On a chain tied at both ends far from its frame (the end 224 m off the
+// reference, heading 0.69 rad), a window left as it is costs what the whole
+// structure does: the ties' weight is no longer so large that their
+// constants swamp the nodes' cost (1e9 gave errors of up to 755 squared
+// sigmas on the truth bench's tied routes, and the local search took moves
+// that made the design worse).
+TEST(DesignDp, LocalCostsHoldOnAChainTiedFarFromItsFrame) {
+    const FrameDesign truth = curve({2.0, 0.05, 0.0}, 1.0 / 500.0, 100, 180, 420, 500, 600);
+    // Nodes every 12 m: some sit exactly on knots (180, 420), which the
+    // backward pass counted a second time.
+    const std::vector<FrameNode> n = nodes_on(truth, 12.0, 0.3, 5);
+    DesignDpOptions o;
+    o.s0 = 0.0;
+    o.s1 = 600.0;
+    o.curvature_weight = 300.0;
+    o.start = truth.start;
+    o.end = design_state(truth, 600.0);
+    ASSERT_GT(o.end->z, 200.0);
+    ASSERT_GT(o.end->dz, 0.6);
+    StructureCosts costs(n, o);
+    costs.reset(truth.elements);
+    EXPECT_LT(costs.cost(), 200.0);
+    for (std::size_t j = 0; j < truth.elements.size(); ++j) {
+        EXPECT_NEAR(costs.replaced(j, j + 1, {truth.elements[j]}), costs.cost(), 1e-2) << j;
+    }
+}
+
+// A replacement taken in place (replace, without a full reset) prices the
+// windows after it as a full reset of the new structure does.
+TEST(DesignDp, AReplacementTakenInPlacePricesLaterWindowsAsAFullSolve) {
+    const std::vector<FrameNode> n = nodes_on(known(), 7.0, 0.3, 11);
+    const DesignDpOptions o = [] {
+        DesignDpOptions d;
+        d.s1 = 700.0;
+        d.curvature_weight = 100.0;
+        return d;
+    }();
+    std::vector<FrameElement> st = known().elements;
+    StructureCosts costs(n, o);
+    costs.reset(st);
+    const std::vector<FrameElement> w{{ElementKind::transition, 200, 275, 0, 0}, {ElementKind::arc, 275, 410, 0, 0}};
+    const double expected = costs.replaced(1, 3, w);
+    costs.replace(1, 3, w);
+    EXPECT_NEAR(costs.cost(), expected, 1e-9 * expected);
+    st[1].s1 = 275;
+    st[2].s0 = 275;
+    StructureCosts fresh(n, o);
+    fresh.reset(st);
+    EXPECT_NEAR(costs.cost(), fresh.cost(), 1e-6 * expected);
+    const std::vector<FrameElement> later{{ElementKind::arc, 275, 400, 0, 0}, {ElementKind::transition, 400, 480, 0, 0}};
+    costs.valid_up_to(3);
+    EXPECT_NEAR(costs.replaced(2, 4, later), fresh.replaced(2, 4, later), 1e-6 * expected);
+    const std::vector<FrameElement> last{{ElementKind::line, 470, 650, 0, 0}, {ElementKind::transition, 650, 700, 0, 0}};
+    costs.valid_up_to(4);
+    EXPECT_NEAR(costs.replaced(4, 5, last), fresh.replaced(4, 5, last), 1e-6 * expected);
 }

@@ -201,14 +201,22 @@ void Search::spawn(double s) {
 
 // The beam: the best hypotheses, none more than a margin above the best.
 void Search::keep_best() {
-    std::stable_sort(live_.begin(), live_.end(), [](const Hypothesis& a, const Hypothesis& b) { return a.value < b.value; });
+    // Sorted by index: a hypothesis is a 4 x 4 system, and the sort would
+    // move each several times.
+    std::vector<std::size_t> order(live_.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return live_[a].value < live_[b].value; });
     const double margin = o_.prune_margin >= 0.0 ? o_.prune_margin : 4.0 * o_.parameter_penalty + 20.0;
-    const double worst = live_.front().value + margin;
-    std::size_t kept = 0, old = 0;
+    const double worst = live_[order.front()].value + margin;
+    std::size_t old = 0;
     std::vector<std::pair<std::pair<ElementKind, double>, std::size_t>> per_knot;
-    for (std::size_t i = 0; i < live_.size(); ++i) {
+    std::vector<Hypothesis> kept;
+    kept.reserve(order.size());
+    for (const std::size_t i : order) {
         Hypothesis& h = live_[i];
-        if (h.value > worst && kept > 0) {
+        if (h.value > worst && !kept.empty()) {
             break;
         }
         const bool fresh = h.seen < fresh_nodes;
@@ -229,12 +237,9 @@ void Search::keep_best() {
         }
         ++it->second;
         old += fresh ? 0 : 1;
-        if (kept != i) {
-            live_[kept] = std::move(h);
-        }
-        ++kept;
+        kept.push_back(std::move(h));
     }
-    live_.resize(kept);
+    live_ = std::move(kept);
 }
 
 std::vector<FrameElement> Search::best_path(double s1) {

@@ -71,12 +71,13 @@ void StructureCosts::reset(const std::vector<FrameElement>& st) {
     cost_ = forward.cost;
     const FrameDesign d = solved(st, forward);
     forward_ = std::move(forward.knots);
+    forward_valid_ = m - 1;
     std::vector<FrameElement> ms;
     for (std::size_t i = 0; i < m; ++i) {
         const FrameElement& e = st[m - 1 - i];
         ms.push_back({e.kind, -e.s1, -e.s0, 0.0, 0.0});
     }
-    const std::vector<Quad> mk = forward_pass(mirrored_, ms, mirror_options_).knots;
+    const std::vector<Quad> mk = forward_pass(mirrored_, ms, mirror_options_, true).knots;
     backward_.assign(m + 1, Quad{});
     for (std::size_t k = 1; k < m; ++k) {
         backward_[k] = mirror(mk[m - k]);
@@ -106,14 +107,18 @@ bool StructureCosts::allowed(std::size_t j, std::size_t k, const std::vector<Fra
     return k == m || design::may_follow(w.back().kind, st_[k].kind);
 }
 
-double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const {
+std::size_t StructureCosts::nodes_after(double s) const {
+    const auto by_t = [](double v, const FrameNode& a) { return v < a.t; };
+    return static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), s, by_t) - n_.begin());
+}
+
+double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update) const {
     if (w.empty() || !allowed(j, k, w)) {
         return infinite;
     }
     const std::size_t m = st_.size();
-    const auto by_t = [](double v, const FrameNode& a) { return v < a.t; };
-    const std::size_t next = j == 0 ? 0 : static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), st_[j - 1].s1, by_t) - n_.begin());
-    const std::size_t end = k == m ? n_.size() : static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), st_[k - 1].s1, by_t) - n_.begin());
+    const std::size_t next = j == 0 ? 0 : nodes_after(st_[j - 1].s1);
+    const std::size_t end = k == m ? n_.size() : nodes_after(st_[k - 1].s1);
     Quad f;
     if (j == 0) {
         f = design::first_element(w[0].kind, o_);
@@ -125,7 +130,12 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
         }
     }
     std::vector<design::KnotMap> maps(w.size());
-    if (!walk(f, w, n_, next, end, o_, j == 0 && !o_.start, k == m && !o_.end, &maps, nullptr)) {
+    std::vector<Quad>* knots = nullptr;
+    if (update) {
+        update->knots.assign(w.size() + 1, Quad{});
+        knots = &update->knots;
+    }
+    if (!walk(f, w, n_, next, end, o_, j == 0 && !o_.start, k == m && !o_.end, &maps, knots)) {
         return infinite;
     }
     const double u = (w.back().s1 - w.back().s0) / S;
@@ -135,6 +145,9 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
         cost = design::close_chain(f, u, o_, &x);
     } else {
         Quad g = design::to_knot(f, u, &maps.back());
+        if (update) {
+            update->knots.back() = g;
+        }
         if (st_[k].kind == ElementKind::transition && w.back().kind == ElementKind::transition) {
             design::fix_zero(g, 2);
         }
@@ -147,25 +160,78 @@ double StructureCosts::replaced(std::size_t j, std::size_t k, const std::vector<
         y(3) = 0.0;
         x = design::start_from_knot(maps.back(), y);
     }
-    return cost + window_prior(j, k, w, maps, x);
+    return cost + window_prior(j, k, w, maps, x, update ? &update->priors : nullptr);
+}
+
+void StructureCosts::replace(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) {
+    Update up;
+    const double total = window(j, k, w, &up);
+    const auto at = [](std::size_t i) { return static_cast<std::ptrdiff_t>(i); };
+    const std::size_t n = w.size();
+    st_.erase(st_.begin() + at(j), st_.begin() + at(k));
+    st_.insert(st_.begin() + at(j), w.begin(), w.end());
+    prior_.erase(prior_.begin() + at(j), prior_.begin() + at(k));
+    prior_.insert(prior_.begin() + at(j), up.priors.begin(), up.priors.end());
+    // Knot i's costs: forward_ before the window's first, backward_ from its end on.
+    forward_.resize(j + 1);
+    for (std::size_t i = 1; i <= n && j + i < st_.size(); ++i) {
+        forward_.push_back(up.knots[i]);
+    }
+    forward_valid_ = forward_.size() - 1;
+    forward_.resize(st_.size() + 1);
+    std::vector<Quad> back(st_.size() + 1);
+    for (std::size_t i = k; i < backward_.size(); ++i) {
+        back[i - k + j + n] = backward_[i];
+    }
+    backward_ = std::move(back);
+    prior_total_ = 0.0;
+    for (const double p : prior_) {
+        prior_total_ += p;
+    }
+    cost_ = total - prior_total_;
+}
+
+void StructureCosts::valid_up_to(std::size_t j) {
+    while (forward_valid_ < j && forward_valid_ + 1 < st_.size()) {
+        const std::size_t v = forward_valid_;
+        const std::vector<FrameElement> w{st_[v]};
+        Quad f;
+        if (v == 0) {
+            f = design::first_element(w[0].kind, o_);
+        } else {
+            f = forward_[v];
+            design::open_element(f, w[0].kind, st_[v - 1].kind == ElementKind::transition && w[0].kind == ElementKind::transition);
+        }
+        walk(f, w, n_, v == 0 ? 0 : nodes_after(st_[v - 1].s1), nodes_after(st_[v].s1), o_, v == 0 && !o_.start, false,
+             nullptr, nullptr);
+        forward_[v + 1] = design::to_knot(f, (w[0].s1 - w[0].s0) / S);
+        ++forward_valid_;
+    }
 }
 
 // The priors with the window's elements as solved here (backtracked from the
 // last one's start state x) in place of the old ones; those outside keep
 // their last full solve's values.
 double StructureCosts::window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
-                                    const std::vector<design::KnotMap>& maps, Vec4 x) const {
+                                    const std::vector<design::KnotMap>& maps, Vec4 x, std::vector<double>* priors) const {
     double prior = prior_total_;
     for (std::size_t i = j; i < k; ++i) {
         prior -= prior_[i];
     }
     const std::size_t m = st_.size();
+    if (priors) {
+        priors->assign(w.size(), 0.0);
+    }
     for (std::size_t i = w.size(); i-- > 0;) {
         const double u = (w[i].s1 - w[i].s0) / S;
         FrameElement e = w[i];
         e.k0 = x(2) / (S * S);
         e.k1 = (x(2) + x(3) * u) / (S * S);
-        prior += element_prior(e, (j == 0 && i == 0) || (k == m && i + 1 == w.size()), o_);
+        const double p = element_prior(e, (j == 0 && i == 0) || (k == m && i + 1 == w.size()), o_);
+        prior += p;
+        if (priors) {
+            (*priors)[i] = p;
+        }
         if (i > 0) {
             Vec4 y = x;
             y(3) = 0.0;

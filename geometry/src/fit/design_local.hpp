@@ -20,10 +20,13 @@ namespace railodd::geometry::fit {
 // last elements may sit at a free chain end (their penalty says so).
 // maps[i] / knots[i + 1], where given, receive the knot after w[i] (the knot
 // cost before the next element opens). False where a knot forbids the next
-// element; f ends as the last element's cost. Nodes sorted by t.
+// element; f ends as the last element's cost. Nodes sorted by t; a node at a
+// knot is the element's before it, or, with `at_knot_after`, the one's after
+// it (the backward pass runs along the mirrored chain, and a node counted on
+// both sides of a window's end cost every trial there its residual twice).
 bool walk(design::Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& nodes, std::size_t next,
           std::size_t end, const DesignDpOptions& o, bool first_at_free_end, bool last_at_free_end,
-          std::vector<design::KnotMap>* maps, std::vector<design::Quad>* knots);
+          std::vector<design::KnotMap>* maps, std::vector<design::Quad>* knots, bool at_knot_after = false);
 
 // The forward pass over a whole structure: its cost, the knot costs before
 // each element opens (knots[j] for j in 1..m-1), the knot maps for
@@ -34,7 +37,8 @@ struct ForwardPass {
     std::vector<design::KnotMap> maps;
     design::Vec4 last_start = design::Vec4::Zero();
 };
-ForwardPass forward_pass(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& st, const DesignDpOptions& o);
+ForwardPass forward_pass(const std::vector<FrameNode>& nodes, const std::vector<FrameElement>& st, const DesignDpOptions& o,
+                         bool at_knot_after = false);
 
 // The structure with every knot's state, backtracked from the last
 // element's start (no data cost).
@@ -56,13 +60,32 @@ public:
     double cost() const { return cost_ + prior_total_; }
 
     // The cost with elements [j, k) replaced by w, which spans the same
-    // chainage; infinite where the design rules forbid the sequence.
-    double replaced(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const;
+    // chainage; infinite where the design rules forbid the sequence. Needs
+    // the forward knot costs up to j (valid_up_to).
+    double replaced(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const {
+        return window(j, k, w, nullptr);
+    }
+
+    // Takes the replacement as made without a full reset: the knot costs
+    // before the window stand, those after it are brought up to date as
+    // valid_up_to asks, and the backward costs hold from the window's end
+    // on, so the next trials must lie wholly after its first element. The
+    // priors of elements outside it keep their values until the next reset.
+    void replace(std::size_t j, std::size_t k, const std::vector<FrameElement>& w);
+
+    // Brings the forward knot costs up to knot j.
+    void valid_up_to(std::size_t j);
 
 private:
+    struct Update {
+        std::vector<design::Quad> knots; // knots[i]: before w[i] opens (i >= 1); knots[w.size()]: before element k
+        std::vector<double> priors;      // of w's elements
+    };
+    double window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update) const;
     bool allowed(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const;
     double window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
-                        const std::vector<design::KnotMap>& maps, design::Vec4 x) const;
+                        const std::vector<design::KnotMap>& maps, design::Vec4 x, std::vector<double>* priors) const;
+    std::size_t nodes_after(double s) const;
 
     const std::vector<FrameNode>& n_;
     const DesignDpOptions& o_;
@@ -70,6 +93,7 @@ private:
     DesignDpOptions mirror_options_;
     std::vector<FrameElement> st_;
     std::vector<design::Quad> forward_, backward_;
+    std::size_t forward_valid_ = 0; // forward_[i] holds for i <= this
     std::vector<double> prior_; // per element, from the last full solve
     double prior_total_ = 0.0;
     double cost_ = 0.0;

@@ -43,6 +43,24 @@ void restrict_to_zero(Quad& f, int i) {
     f.free &= ~(1u << i);
 }
 
+// The inverse of an upper triangular matrix, by back substitution: Eigen's
+// triangular solve takes its blocked path even for a fixed 4 x 4, and
+// to_knot inverts once per parent at every knot.
+Mat4 upper_inverse(const Mat4& M) {
+    Mat4 X = Mat4::Zero();
+    for (int i = 3; i >= 0; --i) {
+        X(i, i) = 1.0 / M(i, i);
+        for (int j = i + 1; j < 4; ++j) {
+            double v = 0.0;
+            for (int k = i + 1; k <= j; ++k) {
+                v += M(i, k) * X(k, j);
+            }
+            X(i, j) = -v * X(i, i);
+        }
+    }
+    return X;
+}
+
 } // namespace
 
 Mat4 flow(double u) {
@@ -186,7 +204,7 @@ Quad to_knot(const Quad& f, double u, KnotMap* map) {
             Pv(i, j) = f.P(cols[i], cols[j]);
         }
     }
-    const Mat4 Mi = M.triangularView<Eigen::Upper>().solve(Mat4::Identity());
+    const Mat4 Mi = upper_inverse(M);
     g.P = Mi.transpose() * Pv * Mi;
     g.q = Mi.transpose() * qv;
     g.c = f.c;
@@ -211,7 +229,7 @@ Vec4 start_from_knot(const KnotMap& map, const Vec4& y) {
             M(i, j) = F(i, cols[j]);
         }
     }
-    const Vec4 xi = M.triangularView<Eigen::Upper>().solve(yv);
+    const Vec4 xi = upper_inverse(M) * yv;
     Vec4 x = Vec4::Zero();
     for (int i = 0; i < d; ++i) {
         x(cols[i]) = xi(i);

@@ -33,9 +33,43 @@ Quad first_element(ElementKind kind, const DesignDpOptions& o) {
 }
 
 void add_nodes(Quad& f, const std::vector<FrameNode>& n, std::size_t first, std::size_t last, double s0) {
-    for (std::size_t i = first; i < last; ++i) {
-        add_row(f, node_row((n[i].t - s0) / S), n[i].w, n[i].z);
+    if (last <= first) {
+        return;
     }
+    // A node's row is (1, u, u^2/2, u^3/6): its outer product holds only the
+    // powers u^0..u^6, so the nodes are summed as weighted power sums (of w,
+    // and of w z up to u^3) and the quadratic built once: the local search
+    // adds the nodes of every trial window this way.
+    double m[7] = {}, r[4] = {}, c = 0.0;
+    for (std::size_t i = first; i < last; ++i) {
+        const double u = (n[i].t - s0) / S, w = n[i].w, wz = w * n[i].z;
+        const double u2 = u * u, u3 = u2 * u;
+        m[0] += w;
+        m[1] += w * u;
+        m[2] += w * u2;
+        m[3] += w * u3;
+        m[4] += w * u2 * u2;
+        m[5] += w * u2 * u3;
+        m[6] += w * u3 * u3;
+        r[0] += wz;
+        r[1] += wz * u;
+        r[2] += wz * u2;
+        r[3] += wz * u3;
+        c += wz * n[i].z;
+    }
+    constexpr double fact[4] = {1.0, 1.0, 2.0, 6.0};
+    for (int a = 0; a < 4; ++a) {
+        if (!(f.free & (1u << a))) {
+            continue;
+        }
+        f.q(a) += r[a] / fact[a];
+        for (int b = 0; b < 4; ++b) {
+            if (f.free & (1u << b)) {
+                f.P(a, b) += m[a + b] / (fact[a] * fact[b]);
+            }
+        }
+    }
+    f.c += c;
 }
 
 double close_chain(Quad f, double u, const DesignDpOptions& o, Vec4* start) {

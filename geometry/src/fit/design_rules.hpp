@@ -16,7 +16,7 @@ namespace railodd::geometry::fit::design {
 constexpr ElementKind kinds[3] = {ElementKind::line, ElementKind::transition, ElementKind::arc};
 
 // A tie holds the scaled state to well under a millimetre.
-constexpr double tie_weight = 1e9;
+constexpr double tie_weight = 1e6;
 
 Vec4 scaled(const FrameState& s);
 

@@ -66,7 +66,7 @@ FrameState design_state(const FrameDesign& d, double t) {
 
 bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& n, std::size_t next,
           std::size_t end, const DesignDpOptions& o, bool first_at_free_end, bool last_at_free_end,
-          std::vector<design::KnotMap>* maps, std::vector<Quad>* knots) {
+          std::vector<design::KnotMap>* maps, std::vector<Quad>* knots, bool at_knot_after) {
     const auto free_end = [&](std::size_t i) {
         return (i == 0 && first_at_free_end) || (i + 1 == w.size() && last_at_free_end);
     };
@@ -75,7 +75,7 @@ bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNo
         const FrameElement& e = w[i];
         const bool last = i + 1 == w.size();
         std::size_t upto = next;
-        while (upto < end && (last || n[upto].t <= e.s1)) {
+        while (upto < end && (last || n[upto].t < e.s1 || (n[upto].t == e.s1 && !at_knot_after))) {
             ++upto;
         }
         design::add_nodes(f, n, next, upto, e.s0);
@@ -99,7 +99,8 @@ bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNo
     }
 }
 
-ForwardPass forward_pass(const std::vector<FrameNode>& n, const std::vector<FrameElement>& st, const DesignDpOptions& o) {
+ForwardPass forward_pass(const std::vector<FrameNode>& n, const std::vector<FrameElement>& st, const DesignDpOptions& o,
+                         bool at_knot_after) {
     if (st.empty()) {
         throw std::invalid_argument("solve_structure: no elements");
     }
@@ -107,7 +108,7 @@ ForwardPass forward_pass(const std::vector<FrameNode>& n, const std::vector<Fram
     r.knots.assign(st.size() + 1, Quad{});
     r.maps.assign(st.size(), design::KnotMap{});
     Quad f = design::first_element(st.front().kind, o);
-    if (!walk(f, st, n, 0, n.size(), o, !o.start, !o.end, &r.maps, &r.knots)) {
+    if (!walk(f, st, n, 0, n.size(), o, !o.start, !o.end, &r.maps, &r.knots, at_knot_after)) {
         throw std::invalid_argument("solve_structure: the design rules forbid this sequence");
     }
     r.cost = design::close_chain(f, (st.back().s1 - st.back().s0) / S, o, &r.last_start);
