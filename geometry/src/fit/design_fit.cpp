@@ -289,19 +289,32 @@ std::vector<Point2> at_ties(std::vector<Point2> p, const std::optional<Pose>& st
     return p;
 }
 
-// The furthest node the design follows. A chain whose left-out strays lie
-// far off is still a railway fit: the strays are the mapping's fault.
-double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
-    std::vector<Point> kept;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        if (weight[i] > 0.0) {
-            kept.push_back(all[i]);
-        }
-    }
-    return measure_fit(a, kept).max_m;
-}
-
 } // namespace
+
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
+    constexpr std::size_t stray_run = 2, witnesses = 2;
+    std::vector<std::size_t> kept_before(all.size() + 1, 0);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        kept_before[i + 1] = kept_before[i] + (weight[i] > 0.0 ? 1 : 0);
+    }
+    std::vector<Point> judged;
+    for (std::size_t i = 0; i < all.size();) {
+        std::size_t j = i;
+        while (j < all.size() && weight[j] == 0.0) {
+            ++j;
+        }
+        if (j == i) {
+            judged.push_back(all[i++]);
+            continue;
+        }
+        const bool stray = j - i <= stray_run && kept_before[i] >= witnesses && kept_before.back() - kept_before[j] >= witnesses;
+        if (!stray) {
+            judged.insert(judged.end(), all.begin() + static_cast<std::ptrdiff_t>(i), all.begin() + static_cast<std::ptrdiff_t>(j));
+        }
+        i = j;
+    }
+    return measure_fit(a, judged).max_m;
+}
 
 FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose>& start, const std::optional<Pose>& end,
                      const FitOptions& options) {

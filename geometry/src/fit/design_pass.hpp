@@ -7,6 +7,7 @@
 #include "reference_line.hpp"
 
 #include "railodd/geometry/alignment.hpp"
+#include "railodd/geometry/fit_alignment.hpp"
 
 #include <optional>
 #include <vector>
@@ -35,5 +36,14 @@ struct DesignPass {
 // kept where the pass's cost, one parameter per node left out, falls); the
 // pass and `weight` (per node: 0 left out) updated. True where any changed.
 bool settle_node_weights(DesignPass& pass, std::vector<double>& weight);
+
+// The furthest node the design follows (weight[i] 0: left out). A chain
+// whose left-out strays lie far off is still a railway fit: the strays are
+// the mapping's fault. A stray is one node, or two side by side, with two
+// followed nodes on either side to show it out of line; a longer run left
+// out is a stretch the design missed, and a node with fewer neighbours
+// cannot be told from the track (Cologne: the middle node of three on a
+// 676 m chain, tied at one end, left 17 m off). Those count.
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight);
 
 } // namespace railodd::geometry::fit
