@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 using namespace railodd::geometry;
@@ -19,41 +20,33 @@ Alignment straight() {
     return a;
 }
 
-std::vector<Point> on_line() {
+// Nodes every 100 m on it, those at `off` moved sideways by the given
+// amounts and left out of the fit; the furthest node the fit must answer for.
+double followed(const std::vector<std::pair<int, double>>& off) {
     std::vector<Point> p;
     for (int i = 0; i <= 7; ++i) {
         p.push_back({100.0 * i, 0.0});
     }
-    return p;
+    std::vector<double> w(p.size(), 1.0);
+    for (const auto& [i, y] : off) {
+        p[static_cast<std::size_t>(i)].y = y;
+        w[static_cast<std::size_t>(i)] = 0.0;
+    }
+    return fit::followed_max(straight(), p, w);
 }
 
 } // namespace
 
 TEST(DesignNodes, AStrayBetweenFollowedNodesIsExcused) {
-    std::vector<Point> p = on_line();
-    p[3].y = 20.0;
-    std::vector<double> w(p.size(), 1.0);
-    w[3] = 0.0;
-    EXPECT_NEAR(fit::followed_max(straight(), p, w), 0.0, 1e-9);
-    p[4].y = -15.0;
-    w[4] = 0.0;
-    EXPECT_NEAR(fit::followed_max(straight(), p, w), 0.0, 1e-9) << "two side by side are a stray pair";
+    EXPECT_NEAR(followed({{3, 20.0}}), 0.0, 1e-9);
+    EXPECT_NEAR(followed({{3, 20.0}, {4, -15.0}}), 0.0, 1e-9) << "two side by side are a stray pair";
 }
 
 TEST(DesignNodes, ANodeWithoutTwoWitnessesEachSideCounts) {
-    std::vector<Point> p = on_line();
-    p[1].y = 17.0;
-    std::vector<double> w(p.size(), 1.0);
-    w[1] = 0.0;
-    EXPECT_NEAR(fit::followed_max(straight(), p, w), 17.0, 1e-6);
+    EXPECT_NEAR(followed({{1, 17.0}}), 17.0, 1e-6);
+    EXPECT_NEAR(followed({{6, -9.0}}), 9.0, 1e-6);
 }
 
 TEST(DesignNodes, AStretchLeftOutCounts) {
-    std::vector<Point> p = on_line();
-    std::vector<double> w(p.size(), 1.0);
-    for (int i = 2; i <= 4; ++i) {
-        p[i].y = 10.0 * i;
-        w[i] = 0.0;
-    }
-    EXPECT_NEAR(fit::followed_max(straight(), p, w), 40.0, 1e-6);
+    EXPECT_NEAR(followed({{2, 20.0}, {3, 30.0}, {4, 40.0}}), 40.0, 1e-6);
 }
