@@ -117,49 +117,56 @@ void add_tie(Quad& f, const Vec4& target, double w) {
 }
 
 double minimum(const Quad& f, Vec4* arg) {
-    // Cholesky of the free block, at most 4 x 4, by hand: the search calls
-    // this once per live hypothesis and node.
+    // Cholesky of the free block, at most 4 x 4, by hand on a packed copy:
+    // the search calls this once per live hypothesis and node.
     int idx[4];
     const int d = variables(f.free, idx);
-    double L[4][4] = {}, b[4], x[4];
+    double a[4][4], b[4];
     for (int i = 0; i < d; ++i) {
         b[i] = f.q(idx[i]);
         for (int j = 0; j <= i; ++j) {
-            double v = f.P(idx[i], idx[j]);
+            a[i][j] = f.P(idx[i], idx[j]);
+        }
+    }
+    double inv[4]; // 1 / L(i, i)
+    for (int i = 0; i < d; ++i) {
+        for (int j = 0; j <= i; ++j) {
+            double v = a[i][j];
             for (int k = 0; k < j; ++k) {
-                v -= L[i][k] * L[j][k];
+                v -= a[i][k] * a[j][k];
             }
             if (i == j) {
-                if (!(v > 0.0)) {
-                    v = 1e-300; // semidefinite: that direction costs nothing
-                }
-                L[i][i] = std::sqrt(v);
+                // Semidefinite: that direction costs nothing.
+                inv[i] = v > 0.0 ? 1.0 / std::sqrt(v) : 1.0 / std::sqrt(1e-300);
+                a[i][i] = 1.0 / inv[i];
             } else {
-                L[i][j] = v / L[j][j];
+                a[i][j] = v * inv[j];
             }
         }
     }
+    double x[4];
     for (int i = 0; i < d; ++i) {
         double v = b[i];
         for (int k = 0; k < i; ++k) {
-            v -= L[i][k] * x[k];
+            v -= a[i][k] * x[k];
         }
-        x[i] = v / L[i][i];
+        x[i] = v * inv[i];
     }
-    for (int i = d; i-- > 0;) {
-        double v = x[i];
-        for (int k = i + 1; k < d; ++k) {
-            v -= L[k][i] * x[k];
-        }
-        x[i] = v / L[i][i];
-    }
+    // value = c - b' P^-1 b = c - |L^-1 b|^2
     double value = f.c;
-    if (arg) {
-        arg->setZero();
-    }
     for (int i = 0; i < d; ++i) {
-        value -= b[i] * x[i];
-        if (arg) {
+        value -= x[i] * x[i];
+    }
+    if (arg) {
+        for (int i = d; i-- > 0;) {
+            double v = x[i];
+            for (int k = i + 1; k < d; ++k) {
+                v -= a[k][i] * x[k];
+            }
+            x[i] = v * inv[i];
+        }
+        arg->setZero();
+        for (int i = 0; i < d; ++i) {
             (*arg)(idx[i]) = x[i];
         }
     }
