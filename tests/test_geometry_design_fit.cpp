@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 using namespace railodd;
@@ -20,6 +21,28 @@ geometry::FitOptions design_search() {
     geometry::FitOptions o;
     o.method = geometry::FitMethod::design_search;
     return o;
+}
+
+// Nodes every `step` metres on a curve of radius r leaving the origin
+// heading east, turning left: n + 1 of them, the inner ones moved `wobble`
+// in and out by turns.
+std::vector<geometry::Point> turnout_nodes(double r, double step, int n, double wobble) {
+    std::vector<geometry::Point> p;
+    for (int i = 0; i <= n; ++i) {
+        const double rr = r + (i == 0 || i == n ? 0.0 : (i % 2 == 0 ? wobble : -wobble));
+        p.push_back({rr * std::sin(step * i / r), r - rr * std::cos(step * i / r)});
+    }
+    return p;
+}
+
+// The design search's fit of a branch tied at its start to a switch on a
+// straight through track at the origin, heading east.
+geometry::FitResult from_switch(const std::vector<geometry::Point>& nodes) {
+    geometry::FitResult fit = geometry::fit_alignment(nodes, geometry::Pose{0.0, 0.0, 0.0, 0.0}, std::nullopt, design_search());
+    if (fit.alignment.primitives.empty()) {
+        throw std::runtime_error("no alignment");
+    }
+    return fit;
 }
 
 } // namespace
@@ -138,9 +161,10 @@ TEST(DesignFit, APassWorseThanTheLastIsNotTaken) {
 
 // A route of known design between two switches (both ends tied), sparse
 // nodes at 0.3 m: the search in the first pass's frame, a beam, loses a
-// stretch the first pass had (7.99 m off without the rival); the last pass's
-// design is its rival, so it is kept (5.28 m, where the next pass's frame
-// can still not do better: the tied sparse routes are the hardest row).
+// stretch the first pass had (8.67 m off without the rival); the last pass's
+// design is its rival, so it is kept (7.73 m; the tied sparse routes are the
+// hardest row, and this one's ties let the curvature jump as at a turnout,
+// which its design has not).
 TEST(DesignFit, TheSearchKeepsTheLastPassAsARival) {
     truth::TruthOptions t;
     t.sigma_m = 0.3;
@@ -152,7 +176,7 @@ TEST(DesignFit, TheSearchKeepsTheLastPassAsARival) {
     };
     const geometry::FitResult fit =
         geometry::fit_alignment(r.nodes, pose_at(r.nodes.front()), pose_at(r.nodes.back()), design_search());
-    EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 6.5);
+    EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 8.2);
 }
 
 // A Cologne branch whose switch node was mapped 2.65 m off the through
@@ -165,4 +189,22 @@ TEST(DesignFit, ATiedEndStartsWhereItsTieIs) {
     const geometry::FitResult fit = geometry::fit_alignment(nodes, start, std::nullopt, design_search());
     EXPECT_LT(fit.quality.followed_max_m, 0.5);
     EXPECT_NEAR(fit.quality.max_m, 2.65, 0.05); // the mapped node is still measured where it is
+}
+
+// A branch leaving a straight through track at its switch on a turnout's
+// curve (R 300 m from the switch, no transition): its tie holds position and
+// heading, and the curvature jumps there as the turnout's does. With the
+// curvature tied too, a transition must lead into the curve and the nodes
+// near the switch are missed.
+TEST(DesignFit, ABranchLeavesItsSwitchOnTheTurnoutsCurve) {
+    const geometry::FitResult fit = from_switch(turnout_nodes(300.0, 8.0, 12, 0.05));
+    EXPECT_NEAR(fit.alignment.primitives.front().curv_start, 1.0 / 300.0, 0.2 / 300.0);
+    EXPECT_LT(fit.quality.followed_max_m, 0.15);
+}
+
+// A jump tighter than any turnout's (1/100 m) is a hook to a few nodes, not
+// a turnout: such a chain is fitted again with its curvature tied.
+TEST(DesignFit, NoJumpTighterThanATurnoutsAtASwitch) {
+    const geometry::FitResult fit = from_switch(turnout_nodes(40.0, 4.0, 4, 0.0));
+    EXPECT_LE(std::abs(fit.alignment.primitives.front().curv_start), 0.01);
 }

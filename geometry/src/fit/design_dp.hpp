@@ -54,6 +54,10 @@ struct DesignDpOptions {
     std::size_t spawn = 3;  // parent elements each new element may follow at a knot, and histories kept per element
     double prune_margin = -1.0; // hypotheses this far above the best are dropped; < 0: 4 penalties + 20
     std::optional<FrameState> start, end; // tied ends
+    // The ties are switches: the curvature may jump there, as a turnout's
+    // curve starts (design_rules.hpp); otherwise (a window inside a chain)
+    // it is tied as firmly as position and heading.
+    bool turnout_ties = false;
     bool refine = true; // the local search after the beam (refine_structure)
 };
 

@@ -118,8 +118,17 @@ std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOpt
 // pass's design, where given, as a rival), or the local search from the
 // previous pass's structure (later passes refine the frame and the noise,
 // not the structure's discovery).
+// A chain's tied ends, and whether its curvature may jump there as a
+// turnout's curve starts (design_rules.hpp).
+struct Ties {
+    std::optional<Pose> start, end;
+    bool turnout = true;
+};
+
 DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
-              const std::optional<Pose>& start, const std::optional<Pose>& end, const FrameDesign* previous, bool search) {
+                    const Ties& ties, const FrameDesign* previous, bool search) {
+    const std::optional<Pose>& start = ties.start;
+    const std::optional<Pose>& end = ties.end;
     std::vector<FrameNode> nodes = develop(ref, p);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         nodes[i].w = weight[i] / (sigma * sigma);
@@ -138,6 +147,7 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
         o.end = frame_state(ref, *end, o.s1);
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
+    o.turnout_ties = ties.turnout;
     o.parameter_penalty = penalty_per_log_node * std::log(std::max<double>(8.0, static_cast<double>(p.size())));
     o.curvature_weight = curvature_weight;
     o.transition_prior = transition_prior;
@@ -175,7 +185,7 @@ CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>
     const auto is = [&](std::size_t j, ElementKind k) { return j < el.size() && el[j].kind == k; };
     if (is(0, ElementKind::line) || start) {
         m.knot_var.push_back(-1);
-        m.knot_fixed.push_back(is(0, ElementKind::line) ? 0.0 : start->curvature);
+        m.knot_fixed.push_back(is(0, ElementKind::line) ? 0.0 : el[0].k0);
     } else {
         m.curv.push_back(el[0].k0);
         m.knot_var.push_back(0);
@@ -188,7 +198,7 @@ CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>
             (el[j].kind == ElementKind::transition && is(j + 1, ElementKind::transition))) {
             m.push_segment(len, true, -1, 0.0);
         } else if (last && end) {
-            m.push_segment(len, true, -1, end->curvature);
+            m.push_segment(len, true, -1, el[j].k1);
         } else if (el[j].kind == ElementKind::arc && m.knot_var.back() >= 0) {
             m.push_segment(len, true, m.knot_var.back());
         } else {
@@ -316,8 +326,11 @@ double followed_max(const Alignment& a, const std::vector<Point>& all, const std
     return measure_fit(a, judged).max_m;
 }
 
-FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& options) {
+namespace {
+
+FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const FitOptions& options) {
+    const std::optional<Pose>& start = ties.start;
+    const std::optional<Pose>& end = ties.end;
     const std::vector<Point2> p = at_ties(mapped, start, end);
     const bool fixed = options.noise_sigma_m > 0.0;
     std::vector<double> weight(p.size(), 1.0);
@@ -325,15 +338,15 @@ FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
-    DesignPass pass = run_pass(smooth, p, weight, sigma, start, end, nullptr, true);
+    DesignPass pass = run_pass(smooth, p, weight, sigma, ties, nullptr, true);
     std::vector<double> on_map = map_distances(pass.alignment, p);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
         std::vector<double> w = robust_weights(pass.distance, next);
         const FrameDesign previous = pass.design;
-        DesignPass tried = run_pass(alignment_reference(pass.alignment, reference_step_m), p, w, next, start, end,
-                                    &previous, round == 0);
+        DesignPass tried = run_pass(alignment_reference(pass.alignment, reference_step_m), p, w, next, ties, &previous,
+                                    round == 0);
         std::vector<double> tried_on_map = map_distances(tried.alignment, p);
         if (pass_cost(tried, tried_on_map, next) > pass_cost(pass, on_map, next) + pass.options.parameter_penalty) {
             break;
@@ -348,7 +361,7 @@ FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose
     }
     if (settle_node_weights(pass, weight)) {
         const FrameDesign previous = pass.design;
-        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, start, end, &previous, false);
+        pass = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, ties, &previous, false);
     }
     std::vector<Point> all, followed;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -360,6 +373,34 @@ FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));
     r.quality.followed_max_m = followed_max(r.alignment, followed, weight);
+    return r;
+}
+
+// The largest curvature jump at a tied end.
+double tie_jump(const Alignment& a, const std::optional<Pose>& start, const std::optional<Pose>& end) {
+    double j = 0.0;
+    if (start && !a.primitives.empty()) {
+        j = std::abs(a.primitives.front().curv_start - start->curvature);
+    }
+    if (end && !a.primitives.empty()) {
+        j = std::max(j, std::abs(a.primitives.back().curv_end - end->curvature));
+    }
+    return j;
+}
+
+} // namespace
+
+FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose>& start, const std::optional<Pose>& end,
+                     const FitOptions& options) {
+    // A jump tighter than a turnout's 1/100 m is no turnout: a short chain
+    // between two switches hooking to its few nodes (Cologne: 36 links with
+    // jumps over 1/50 m, chains of three nodes and 12-18 m). It is fitted
+    // again with its curvature tied.
+    constexpr double max_turnout_curvature = 0.01;
+    FitResult r = fit_with(mapped, {start, end, true}, options);
+    if (tie_jump(r.alignment, start, end) > max_turnout_curvature) {
+        r = fit_with(mapped, {start, end, false}, options);
+    }
     return r;
 }
 

@@ -34,6 +34,7 @@ bool bent_to(const DesignPass& pass, std::size_t i) {
 FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes, std::size_t first, std::size_t last) {
     const std::size_t a = first > 3 ? first - 3 : 0, b = std::min(nodes.size() - 1, last + 3);
     DesignDpOptions o = pass.options;
+    o.turnout_ties = false; // the window's ties are the design's own, inside the chain
     const auto& el = pass.design.elements;
     const auto holding = [&](double t) {
         return std::find_if(el.begin(), el.end() - 1, [&](const FrameElement& e) { return t <= e.s1; });

@@ -25,7 +25,7 @@ void add_free_end(Quad& f, double u) {
 Quad first_element(ElementKind kind, const DesignDpOptions& o) {
     Quad f = empty_quad(first_free(kind));
     if (o.start) {
-        add_tie(f, scaled(*o.start), tie_weight);
+        add_tie(f, scaled(*o.start), tie_weight, o.turnout_ties ? turnout_weight : tie_weight);
     } else {
         add_free_end(f, 0.0);
     }
@@ -79,7 +79,7 @@ double close_chain(Quad f, double u, const DesignDpOptions& o, Vec4* start) {
     }
     KnotMap map;
     Quad g = to_knot(f, u, &map);
-    add_tie(g, scaled(*o.end), tie_weight);
+    add_tie(g, scaled(*o.end), tie_weight, o.turnout_ties ? turnout_weight : tie_weight);
     Vec4 y;
     const double cost = minimum(g, &y);
     if (start) {
