@@ -114,10 +114,6 @@ std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOpt
     return st;
 }
 
-// One pass in the frame of `ref`: the search (`search`, with the previous
-// pass's design, where given, as a rival), or the local search from the
-// previous pass's structure (later passes refine the frame and the noise,
-// not the structure's discovery).
 // A chain's tied ends, and whether its curvature may jump there as a
 // turnout's curve starts (design_rules.hpp).
 struct Ties {
@@ -125,6 +121,10 @@ struct Ties {
     bool turnout = true;
 };
 
+// One pass in the frame of `ref`: the search (`search`, with the previous
+// pass's design, where given, as a rival), or the local search from the
+// previous pass's structure (later passes refine the frame and the noise,
+// not the structure's discovery).
 DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
                     const Ties& ties, const FrameDesign* previous, bool search) {
     const std::optional<Pose>& start = ties.start;

@@ -112,6 +112,15 @@ std::size_t StructureCosts::nodes_after(double s) const {
     return static_cast<std::size_t>(std::upper_bound(n_.begin(), n_.end(), s, by_t) - n_.begin());
 }
 
+bool StructureCosts::open_at(std::size_t j, ElementKind kind, Quad& f) const {
+    if (j == 0) {
+        f = design::first_element(kind, o_);
+        return true;
+    }
+    f = forward_[j];
+    return design::open_element(f, kind, st_[j - 1].kind == ElementKind::transition && kind == ElementKind::transition);
+}
+
 double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update) const {
     if (w.empty() || !allowed(j, k, w)) {
         return infinite;
@@ -120,14 +129,8 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
     const std::size_t next = j == 0 ? 0 : nodes_after(st_[j - 1].s1);
     const std::size_t end = k == m ? n_.size() : nodes_after(st_[k - 1].s1);
     Quad f;
-    if (j == 0) {
-        f = design::first_element(w[0].kind, o_);
-    } else {
-        f = forward_[j];
-        const bool after_transition = st_[j - 1].kind == ElementKind::transition && w[0].kind == ElementKind::transition;
-        if (!design::open_element(f, w[0].kind, after_transition)) {
-            return infinite;
-        }
+    if (!open_at(j, w[0].kind, f)) {
+        return infinite;
     }
     std::vector<design::KnotMap> maps(w.size());
     std::vector<Quad>* knots = nullptr;
@@ -196,12 +199,7 @@ void StructureCosts::valid_up_to(std::size_t j) {
         const std::size_t v = forward_valid_;
         const std::vector<FrameElement> w{st_[v]};
         Quad f;
-        if (v == 0) {
-            f = design::first_element(w[0].kind, o_);
-        } else {
-            f = forward_[v];
-            design::open_element(f, w[0].kind, st_[v - 1].kind == ElementKind::transition && w[0].kind == ElementKind::transition);
-        }
+        open_at(v, w[0].kind, f);
         walk(f, w, n_, v == 0 ? 0 : nodes_after(st_[v - 1].s1), nodes_after(st_[v].s1), o_, v == 0 && !o_.start, false,
              nullptr, nullptr);
         forward_[v + 1] = design::to_knot(f, (w[0].s1 - w[0].s0) / S);

@@ -86,6 +86,9 @@ private:
     double window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
                         const std::vector<design::KnotMap>& maps, design::Vec4 x, std::vector<double>* priors) const;
     std::size_t nodes_after(double s) const;
+    // The cost f of an element of `kind` opened at knot j (the chain's start
+    // for j = 0); false where the design rules forbid it there.
+    bool open_at(std::size_t j, ElementKind kind, design::Quad& f) const;
 
     const std::vector<FrameNode>& n_;
     const DesignDpOptions& o_;

@@ -129,7 +129,7 @@ double minimum(const Quad& f, Vec4* arg) {
             a[i][j] = f.P(idx[i], idx[j]);
         }
     }
-    double inv[4]; // 1 / L(i, i)
+    double inv[4]; // 1 / L(i, i); a keeps L below its diagonal
     for (int i = 0; i < d; ++i) {
         for (int j = 0; j <= i; ++j) {
             double v = a[i][j];
@@ -139,7 +139,6 @@ double minimum(const Quad& f, Vec4* arg) {
             if (i == j) {
                 // Semidefinite: that direction costs nothing.
                 inv[i] = v > 0.0 ? 1.0 / std::sqrt(v) : 1.0 / std::sqrt(1e-300);
-                a[i][i] = 1.0 / inv[i];
             } else {
                 a[i][j] = v * inv[j];
             }

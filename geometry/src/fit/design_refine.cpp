@@ -41,7 +41,6 @@ public:
         std::vector<char> dirty(st.size(), 1);
         for (int round = 0; round < 8; ++round) {
             costs_.reset(st);
-            if (std::getenv("CHK2") && st.size() > 2) { for (std::size_t q = 1; q + 1 < st.size(); ++q) { costs_.valid_up_to(q); std::fprintf(stderr, "ID q %zu %g %g\n", q, costs_.cost(), costs_.replaced(q, q + 1, {st[q]})); } }
             std::vector<char> next(st.size(), 0);
             bool improved = false;
             for (std::size_t j = 0; j < st.size(); ++j) {
