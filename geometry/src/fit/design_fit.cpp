@@ -370,6 +370,7 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     }
     FitResult r = polish(pass, p, all, weight, sigma, start, end);
     r.quality.noise_sigma_m = sigma;
+    r.quality.scatter_sigma_m = guess;
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));
     r.quality.followed_max_m = followed_max(r.alignment, followed, weight);

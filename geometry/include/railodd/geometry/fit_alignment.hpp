@@ -50,6 +50,10 @@ struct FitQuality {
     std::size_t fallback_windows = 0; // windows kept as the fine clothoid spline (no design came near the nodes)
     std::size_t outliers = 0;         // mapped nodes left out of the fit as outliers
     double noise_sigma_m = 0.0;       // node scatter the fit assumed: estimated, or FitOptions' override
+    // The nodes' scatter about their neighbours' line, which no misfit
+    // inflates (the design search's; 0 where not estimated): with
+    // noise_sigma_m, how far noise alone takes a node (chain_fit.cpp).
+    double scatter_sigma_m = 0.0;
 };
 
 struct FitResult {
