@@ -11,8 +11,8 @@ routes=${2:-300}
 shift $(( $# > 2 ? 2 : $# ))
 sigmas=${*:-0.1 0.3 1.0 2.0}
 bin=build/bench/bench_alignment_truth
-echo "| spacing | sigma | routes max > 1 m | route max p50 / p95 / max (m) | route p95 median | radius error p50 / p95 | elements / design p95 / max | spurious sign changes (routes) | noise / sigma p5-p95 | fit s |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "| spacing | sigma | routes max > 1 m | over issue 37 limit | route max p50 / p95 / max (m) | route p95 median | radius error p50 / p95 | elements / design p95 / max | spurious sign changes (routes) | noise / sigma p5-p95 | fit s |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for spacing in osm dense sparse; do
   for s in $sigmas; do
     "$bin" "$routes" "$s" --spacing "$spacing" --method "$method" --outliers "${OUTLIERS:-0.01}" | python3 -c '
@@ -21,13 +21,14 @@ t = sys.stdin.read()
 g = lambda p: re.search(p, t).groups()
 fit, = g(r"fit ([0-9.]+) s")
 over, = g(r"routes with max > 1 m: ([0-9]+)")
+lim = g(r"over the ([0-9.]+) m limit: ([0-9]+)")
 mx = g(r"route max median ([0-9.]+), p95 ([0-9.]+), max ([0-9.]+)")
 p95, = g(r"route p95 median ([0-9.]+)")
 rad = g(r"arc radius error: p50 ([0-9.]+) %, p95 ([0-9.]+) %")
 el = g(r"elements / design: median [0-9.]+, p95 ([0-9.]+), max ([0-9.]+)")
 sc = g(r"spurious sign changes: (-?[0-9]+) on ([0-9]+) routes")
 nz = g(r"noise / sigma: p5 ([0-9.]+), median [0-9.]+, p95 ([0-9.]+)")
-print("| %s | %s | %s | %s / %s / %s | %s | %s / %s %% | %s / %s | %s (%s) | %s-%s | %s |" % ((sys.argv[1], sys.argv[2], over) + mx + (p95,) + rad + el + sc + nz + (fit,)))
+print("| %s | %s | %s | %s (%s m) | %s / %s / %s | %s | %s / %s %% | %s / %s | %s (%s) | %s-%s | %s |" % ((sys.argv[1], sys.argv[2], over, lim[1], lim[0]) + mx + (p95,) + rad + el + sc + nz + (fit,)))
 ' "$spacing" "$s"
   done
 done

@@ -78,3 +78,18 @@ TEST(FitLoops, ExtraLengthAloneIsALoop) {
     const std::vector<Point> nodes = nodes_along(straight(360.0), 20.0);
     EXPECT_TRUE(loops_back(wander, nodes));
 }
+
+TEST(FitLoops, ALoopBetweenTwoNodesIsALoop) {
+    // A full circle of R 70 m (440 m) halfway along 10 km of straight: 4.4 %
+    // longer than the nodes' polyline and one turn, within the whole chain's
+    // slack; but the two nodes beside it, 25 m apart, have feet 465 m apart.
+    Alignment looped;
+    looped.primitives = {make_line(5000.0), make_arc(2 * pi * 70.0, 1.0 / 70.0), make_line(5000.0)};
+    std::vector<Point> nodes = nodes_along(straight(10000.0), 25.0, 0.3);
+    for (Point& q : nodes) {
+        q.x += 12.5; // no node where the circle leaves the line, whose foot is either end of it
+    }
+    nodes.pop_back();
+    EXPECT_TRUE(loops_back(looped, nodes));
+    EXPECT_FALSE(loops_back(straight(10000.0), nodes));
+}

@@ -186,6 +186,23 @@ bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run) {
     return here * turn(first - 1) < 0.0 && here * turn(first + run) < 0.0;
 }
 
+// Whether nodes i and i + 1 zigzag: each further than `far` from the chord
+// between the kept nodes either side of them, on opposite sides of it. The
+// spike and bump tests do not see them (each is the other's neighbour, and
+// the line through them turns both ways); a curve puts both on one side.
+bool zigzag(const DesignPass& pass, std::size_t i, double far) {
+    const auto& q = pass.nodes;
+    if (i == 0 || i + 2 >= q.size() || !(q[i - 1].w > 0.0) || !(q[i + 2].w > 0.0) || !(q[i + 2].t > q[i - 1].t)) {
+        return false;
+    }
+    const auto off = [&](std::size_t k) {
+        const double u = (q[k].t - q[i - 1].t) / (q[i + 2].t - q[i - 1].t);
+        return q[k].z - (q[i - 1].z + u * (q[i + 2].z - q[i - 1].z));
+    };
+    const double a = off(i), b = off(i + 1);
+    return a * b < 0.0 && std::min(std::abs(a), std::abs(b)) > far;
+}
+
 // Left-out node i taken back, alone or in place of a kept node within two.
 std::vector<Trial> take_back_trials(const DesignPass& pass, std::size_t i) {
     std::vector<Trial> trials{{{}, {i}}};
@@ -206,8 +223,8 @@ bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach) {
 // lies far from: i or either neighbour alone (the design may follow a stray
 // with no knot beside it and bend at the good node next to it), or i with
 // one of the next two. Away from a free end each must stand out from the
-// kept nodes: a spike alone, two side by side a bump, two a node apart each
-// a spike. Beside a free end no shape tells a stray from a curve's start:
+// kept nodes: a spike alone, two side by side a bump or a zigzag, two a
+// node apart each a spike. Beside a free end no shape tells a stray from a curve's start:
 // the cost alone decides there.
 std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double far) {
     const std::size_t n = pass.nodes.size();
@@ -221,7 +238,8 @@ std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double fa
     }
     for (std::size_t j = i + 1; j <= i + 2; ++j) {
         const bool suspect = kept(j) && (bent_to(pass, j) || pass.distance[j] > far || near_free_end(pass, j, 3));
-        const bool pair = j == i + 1 ? stands_out(pass, i, 2) : stands_out(pass, i, 1) && stands_out(pass, j, 1);
+        const bool pair = j == i + 1 ? stands_out(pass, i, 2) || zigzag(pass, i, far)
+                                     : stands_out(pass, i, 1) && stands_out(pass, j, 1);
         if (suspect && (!judged(i) || pair)) {
             trials.push_back({{i, j}, {}});
         }
