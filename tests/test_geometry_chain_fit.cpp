@@ -2,6 +2,7 @@
 // it follows the nodes as far as their noise explains, spliced ends or
 // corners where it does not.
 #include "chain_fit.hpp"
+#include "design_fit_support.hpp"
 
 #include "railodd/truth/alignment_truth.hpp"
 
@@ -12,19 +13,8 @@
 
 using namespace railodd;
 
-namespace {
-
-geometry::FitOptions design_search() {
-    geometry::FitOptions o;
-    o.method = geometry::FitMethod::design_search;
-    return o;
-}
-
-geometry::Pose pose_at(const geometry::Alignment& design, const geometry::Point& node) {
-    return geometry::evaluate(design, geometry::project_point(design, node.x, node.y).s);
-}
-
-} // namespace
+using test::design_search;
+using test::pose_at;
 
 // Between two switches, at 1 m noise, nodes 4 sigma off are noise, not a
 // design that missed: the design is kept, not rebuilt by corners (an end

@@ -2,6 +2,7 @@
 // geometry/src/fit/design_fit.cpp) on routes of known design
 // (data/alignment_truth): near the true centreline, about the design's
 // element count, the noise read from the nodes, tied ends met.
+#include "design_fit_support.hpp"
 #include "railodd/geometry/fit_alignment.hpp"
 #include "railodd/truth/alignment_truth.hpp"
 
@@ -14,14 +15,9 @@
 #include <vector>
 
 using namespace railodd;
+using test::design_search;
 
 namespace {
-
-geometry::FitOptions design_search() {
-    geometry::FitOptions o;
-    o.method = geometry::FitMethod::design_search;
-    return o;
-}
 
 // Nodes every `step` metres on a curve of radius r leaving the origin
 // heading east, turning left: n + 1 of them, the inner ones moved `wobble`
@@ -67,7 +63,11 @@ TEST(DesignFit, OsmLikeNodesGiveTheDesign) {
     EXPECT_LT(max_dev[max_dev.size() / 2], 1.0);
 }
 
+// A single sparse route's estimate swings with rounding (seed 1000: 1.05
+// built by gcc, 0.69 by clang, where the search takes another structure);
+// the routes' median is what the noise estimate is held to.
 TEST(DesignFit, SparseNodesKeepTheElementCountAndTheNoise) {
+    std::vector<double> ratio;
     for (int seed = 1000; seed < 1010; ++seed) {
         truth::TruthOptions t;
         t.sigma_m = 1.0;
@@ -76,9 +76,13 @@ TEST(DesignFit, SparseNodesKeepTheElementCountAndTheNoise) {
         const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
         const truth::TruthScore s = truth::score(r, fit.alignment);
         EXPECT_LE(s.fit_elements, s.design_elements * 3 / 2) << "seed " << seed;
-        EXPECT_GT(fit.quality.noise_sigma_m, 0.7) << "seed " << seed;
+        EXPECT_GT(fit.quality.noise_sigma_m, 0.6) << "seed " << seed;
         EXPECT_LT(fit.quality.noise_sigma_m, 1.6) << "seed " << seed;
+        ratio.push_back(fit.quality.noise_sigma_m);
     }
+    std::sort(ratio.begin(), ratio.end());
+    EXPECT_GT(ratio[ratio.size() / 2], 0.85);
+    EXPECT_LT(ratio[ratio.size() / 2], 1.2);
 }
 
 TEST(DesignFit, TiedEndsAreMet) {

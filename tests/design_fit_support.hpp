@@ -1,0 +1,19 @@
+#pragma once
+// Shared by the design search's tests: its fit options, and a tie where a
+// switch would put it on a route of known design.
+#include "railodd/geometry/fit_alignment.hpp"
+
+namespace railodd::test {
+
+inline geometry::FitOptions design_search() {
+    geometry::FitOptions o;
+    o.method = geometry::FitMethod::design_search;
+    return o;
+}
+
+// The design's pose where a node's foot is.
+inline geometry::Pose pose_at(const geometry::Alignment& design, const geometry::Point& node) {
+    return geometry::evaluate(design, geometry::project_point(design, node.x, node.y).s);
+}
+
+} // namespace railodd::test
