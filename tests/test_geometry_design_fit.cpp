@@ -127,6 +127,20 @@ TEST(DesignFit, AStrayNodeWhereNodesAreSparseIsLeftOut) {
     }
 }
 
+// Beside a free end a node is left out only where it lies off the chord
+// between its neighbours. Sparse nodes at 0.1 m, two on a 416 m straight
+// before the first curve: left out, the second let the free start swing
+// onto a 433 m transition, 32 m off the centreline.
+TEST(DesignFit, AGoodNodeBesideAFreeEndIsFollowed) {
+    truth::TruthOptions t;
+    t.sigma_m = 0.1;
+    t.outlier_fraction = 0.0;
+    t.spacing = truth::Spacing::sparse;
+    const truth::TruthRoute r = truth::make_route(1090, t);
+    const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
+    EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.5);
+}
+
 // Dense noisy nodes (every 5-15 m at 1 m): the transitions' lengths are
 // held to the design rule in the exact polish as in the search, so the arcs
 // between them keep their radii (without, the median error on these routes
