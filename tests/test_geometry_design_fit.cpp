@@ -132,11 +132,7 @@ TEST(DesignFit, AStrayNodeWhereNodesAreSparseIsLeftOut) {
 // before the first curve: left out, the second let the free start swing
 // onto a 433 m transition, 32 m off the centreline.
 TEST(DesignFit, AGoodNodeBesideAFreeEndIsFollowed) {
-    truth::TruthOptions t;
-    t.sigma_m = 0.1;
-    t.outlier_fraction = 0.0;
-    t.spacing = truth::Spacing::sparse;
-    const truth::TruthRoute r = truth::make_route(1090, t);
+    const truth::TruthRoute r = test::truth_route(1090, 0.1, 0.0, truth::Spacing::sparse);
     const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
     EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.5);
 }
@@ -183,16 +179,9 @@ TEST(DesignFit, APassWorseThanTheLastIsNotTaken) {
 // stretch the first pass had (1.72 m off without the rival); the last pass's
 // design is its rival, so it is kept (0.26 m).
 TEST(DesignFit, TheSearchKeepsTheLastPassAsARival) {
-    truth::TruthOptions t;
-    t.sigma_m = 0.3;
-    t.outlier_fraction = 0.01;
-    t.spacing = truth::Spacing::sparse;
-    const truth::TruthRoute r = truth::make_route(1199, t);
-    const auto pose_at = [&](const geometry::Point& n) {
-        return geometry::evaluate(r.design, geometry::project_point(r.design, n.x, n.y).s);
-    };
-    const geometry::FitResult fit =
-        geometry::fit_alignment(r.nodes, pose_at(r.nodes.front()), pose_at(r.nodes.back()), design_search());
+    const truth::TruthRoute r = test::truth_route(1199, 0.3, 0.01, truth::Spacing::sparse);
+    const geometry::FitResult fit = geometry::fit_alignment(r.nodes, test::pose_at(r.design, r.nodes.front()),
+                                                            test::pose_at(r.design, r.nodes.back()), design_search());
     EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.0);
 }
 
