@@ -97,6 +97,20 @@ void print_bounds(const std::vector<double>& bound, const std::vector<double>& r
                 100.0 * static_cast<double>(over3) / n, quantile(ratio, 0.5), quantile(ratio, 0.95));
 }
 
+// One route's line for the worst routes, and one per arc for the worst arcs.
+void add_worst(int seed, const truth::TruthRoute& r, const truth::TruthScore& s, double noise_m,
+               std::vector<Worst>& worst_routes, std::vector<Worst>& worst_arcs) {
+    char line[256];
+    std::snprintf(line, sizeof line, "seed %d: max %.2f m at s %.0f, p95 %.2f m, %zu / %zu elements, noise %.2f m", seed,
+                  s.deviation_max_m, s.deviation_max_at_m, s.deviation_p95_m, s.fit_elements, s.design_elements, noise_m);
+    worst_routes.push_back({s.deviation_max_m, line});
+    for (std::size_t a = 0; a < r.arcs.size() && a < s.radius_errors.size(); ++a) {
+        std::snprintf(line, sizeof line, "seed %d arc at s %.0f: R %.0f m, %.0f m long, error %.1f %%", seed,
+                      r.arcs[a].s0, 1.0 / r.arcs[a].curvature, r.arcs[a].s1 - r.arcs[a].s0, 100 * s.radius_errors[a]);
+        worst_arcs.push_back({s.radius_errors[a], line});
+    }
+}
+
 void run_sigma(const Options& opt, double sigma) {
     const int routes = opt.routes, worst = opt.worst;
     const double outliers = opt.outliers;
@@ -138,18 +152,7 @@ void run_sigma(const Options& opt, double sigma) {
                 radius_bounded.insert(radius_bounded.end(), s.radius_errors.begin(), s.radius_errors.end());
             }
         }
-        char line[256];
-        std::snprintf(line, sizeof line, "seed %d: max %.2f m at s %.0f, p95 %.2f m, %zu / %zu elements, noise %.2f m",
-                      seed, s.deviation_max_m, s.deviation_max_at_m, s.deviation_p95_m, s.fit_elements,
-                      s.design_elements,
-                      fit.quality.noise_sigma_m);
-        worst_routes.push_back({s.deviation_max_m, line});
-        for (std::size_t a = 0; a < r.arcs.size() && a < s.radius_errors.size(); ++a) {
-            std::snprintf(line, sizeof line, "seed %d arc at s %.0f: R %.0f m, %.0f m long, error %.1f %%", seed,
-                          r.arcs[a].s0, 1.0 / r.arcs[a].curvature, r.arcs[a].s1 - r.arcs[a].s0,
-                          100 * s.radius_errors[a]);
-            worst_arcs.push_back({s.radius_errors[a], line});
-        }
+        add_worst(seed, r, s, fit.quality.noise_sigma_m, worst_routes, worst_arcs);
         ratio.push_back(static_cast<double>(s.fit_elements) / static_cast<double>(s.design_elements));
         spurious += std::max(0L, s.spurious_sign_changes);
         routes_spurious += s.spurious_sign_changes > 0 ? 1 : 0;

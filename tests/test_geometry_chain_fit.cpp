@@ -8,7 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <vector>
 
 using namespace railodd;
@@ -21,9 +20,7 @@ using test::pose_at;
 // the polish could not bring onto its tie may still be spliced).
 TEST(ChainFit, ANoisyChainBetweenSwitchesKeepsItsDesign) {
     for (int seed = 1000; seed < 1006; ++seed) {
-        truth::TruthOptions t;
-        t.sigma_m = 1.0;
-        const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), t);
+        const truth::TruthRoute r = test::truth_route(seed, 1.0, 0.01, truth::Spacing::osm);
         const geometry::ChainFit f = geometry::fit_chain_points(r.nodes, pose_at(r.design, r.nodes.front()),
                                                                 pose_at(r.design, r.nodes.back()), design_search());
         EXPECT_NE(f.method, geometry::ChainMethod::corners) << "seed " << seed;

@@ -186,21 +186,10 @@ bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run) {
     return here * turn(first - 1) < 0.0 && here * turn(first + run) < 0.0;
 }
 
-// Whether nodes i and i + 1 zigzag: each further than `far` from the chord
-// between the kept nodes either side of them, on opposite sides of it. The
-// spike and bump tests do not see them (each is the other's neighbour, and
-// the line through them turns both ways); a curve puts both on one side.
-bool zigzag(const DesignPass& pass, std::size_t i, double far) {
-    const auto& q = pass.nodes;
-    if (i == 0 || i + 2 >= q.size() || !(q[i - 1].w > 0.0) || !(q[i + 2].w > 0.0) || !(q[i + 2].t > q[i - 1].t)) {
-        return false;
-    }
-    const auto off = [&](std::size_t k) {
-        const double u = (q[k].t - q[i - 1].t) / (q[i + 2].t - q[i - 1].t);
-        return q[k].z - (q[i - 1].z + u * (q[i + 2].z - q[i - 1].z));
-    };
-    const double a = off(i), b = off(i + 1);
-    return a * b < 0.0 && std::min(std::abs(a), std::abs(b)) > far;
+// Node k's signed offset from the chord between nodes a and b (frame).
+double chord_offset(const std::vector<FrameNode>& q, std::size_t a, std::size_t b, std::size_t k) {
+    const double u = (q[k].t - q[a].t) / (q[b].t - q[a].t);
+    return q[k].z - (q[a].z + u * (q[b].z - q[a].z));
 }
 
 // Whether nodes first..last each lie further than `far` from the chord
@@ -211,12 +200,21 @@ bool off_chord(const DesignPass& pass, std::size_t first, std::size_t last, doub
         return false;
     }
     for (std::size_t k = first; k <= last; ++k) {
-        const double u = (q[k].t - q[first - 1].t) / (q[last + 1].t - q[first - 1].t);
-        if (!(std::abs(q[k].z - (q[first - 1].z + u * (q[last + 1].z - q[first - 1].z))) > far)) {
+        if (!(std::abs(chord_offset(q, first - 1, last + 1, k)) > far)) {
             return false;
         }
     }
     return true;
+}
+
+// Whether nodes i and i + 1 zigzag: each off the chord between the kept
+// nodes either side of them, on opposite sides of it. The spike and bump
+// tests do not see them (each is the other's neighbour, and the line
+// through them turns both ways); a curve puts both on one side.
+bool zigzag(const DesignPass& pass, std::size_t i, double far) {
+    const auto& q = pass.nodes;
+    return off_chord(pass, i, i + 1, far) && q[i - 1].w > 0.0 && q[i + 2].w > 0.0 &&
+           chord_offset(q, i - 1, i + 2, i) * chord_offset(q, i - 1, i + 2, i + 1) < 0.0;
 }
 
 // Left-out node i taken back, alone or in place of a kept node within two.

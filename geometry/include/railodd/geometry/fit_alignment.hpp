@@ -51,8 +51,9 @@ struct FitQuality {
     std::size_t outliers = 0;         // mapped nodes left out of the fit as outliers
     double noise_sigma_m = 0.0;       // node scatter the fit assumed: estimated, or FitOptions' override
     // The nodes' scatter about their neighbours' line, which no misfit
-    // inflates (the design search's; 0 where not estimated): with
-    // noise_sigma_m, how far noise alone takes a node (chain_fit.cpp).
+    // inflates (the design search's; its 0.3 m prior where under a dozen
+    // nodes tell it; 0 where not estimated): with noise_sigma_m, how far
+    // noise alone takes a node (chain_fit.cpp).
     double scatter_sigma_m = 0.0;
 };
 
