@@ -58,14 +58,20 @@ std::vector<FrameNode> nodes_on(const FrameDesign& d, double step, double sigma,
     return n;
 }
 
+// Options for a design over [0, s1].
+DesignDpOptions over(double s1) {
+    DesignDpOptions o;
+    o.s0 = 0.0;
+    o.s1 = s1;
+    return o;
+}
+
 } // namespace
 
 TEST(DesignDp, RecoversAKnownDesignFromNodesOnIt) {
     const FrameDesign truth = known();
     const std::vector<FrameNode> n = nodes_on(truth, 5.0, 0.0, 1);
-    DesignDpOptions o;
-    o.s0 = 0.0;
-    o.s1 = 700.0;
+    DesignDpOptions o = over(700.0);
     o.knot_step_m = 10.0;
     const FrameDesign d = design_dp(n, o);
     ASSERT_EQ(d.elements.size(), truth.elements.size());
@@ -83,9 +89,7 @@ TEST(DesignDp, NoisyNodesGiveTheDesignsStructure) {
     const FrameDesign truth = known();
     for (unsigned seed = 1; seed <= 5; ++seed) {
         const std::vector<FrameNode> n = nodes_on(truth, 10.0, 0.3, seed);
-        DesignDpOptions o;
-        o.s0 = 0.0;
-        o.s1 = 700.0;
+        DesignDpOptions o = over(700.0);
         o.parameter_penalty = 2.0 * std::log(static_cast<double>(n.size()));
         const FrameDesign d = design_dp(n, o);
         ASSERT_EQ(d.elements.size(), 5u) << "seed " << seed;
@@ -96,9 +100,7 @@ TEST(DesignDp, NoisyNodesGiveTheDesignsStructure) {
 TEST(DesignDp, TiedEndsAreMet) {
     const FrameDesign truth = known();
     const std::vector<FrameNode> n = nodes_on(truth, 10.0, 0.3, 7);
-    DesignDpOptions o;
-    o.s0 = 0.0;
-    o.s1 = 700.0;
+    DesignDpOptions o = over(700.0);
     o.start = FrameState{0.5, 0.0, 0.0};
     o.end = FrameState{z_of(truth, 700.0), 0.5, 0.0};
     const FrameDesign d = design_dp(n, o);
@@ -117,9 +119,7 @@ TEST(DesignDp, PrunedSearchMatchesExhaustiveEnumeration) {
                       {ElementKind::arc, 60, 100, 0.004, 0.004}};
     for (unsigned seed = 1; seed <= 3; ++seed) {
         const std::vector<FrameNode> n = nodes_on(truth, 4.0, 0.05, seed);
-        DesignDpOptions o;
-        o.s0 = 0.0;
-        o.s1 = 100.0;
+        DesignDpOptions o = over(100.0);
         o.knot_step_m = 10.0;
         o.parameter_penalty = 6.0;
         o.curvature_weight = 1e3;
@@ -174,9 +174,7 @@ TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
     const FrameDesign truth = known();
     const std::vector<FrameNode> n = nodes_on(truth, 7.0, 0.3, 11);
     for (const bool tied : {false, true}) {
-        DesignDpOptions o;
-        o.s0 = 0.0;
-        o.s1 = 700.0;
+        DesignDpOptions o = over(700.0);
         o.curvature_weight = 100.0;
         if (tied) {
             o.start = FrameState{0.3, 0.01, 0.0};
@@ -224,9 +222,7 @@ TEST(DesignDp, LocalCostsHoldOnAChainTiedFarFromItsFrame) {
     // Nodes every 12 m: some sit exactly on knots (180, 420), which the
     // backward pass counted a second time.
     const std::vector<FrameNode> n = nodes_on(truth, 12.0, 0.3, 5);
-    DesignDpOptions o;
-    o.s0 = 0.0;
-    o.s1 = 600.0;
+    DesignDpOptions o = over(600.0);
     o.curvature_weight = 300.0;
     o.start = truth.start;
     o.end = design_state(truth, 600.0);
@@ -268,4 +264,26 @@ TEST(DesignDp, AReplacementTakenInPlacePricesLaterWindowsAsAFullSolve) {
     const std::vector<FrameElement> last{{ElementKind::line, 470, 650, 0, 0}, {ElementKind::transition, 650, 700, 0, 0}};
     costs.valid_up_to(4);
     EXPECT_NEAR(costs.replaced(4, 5, last), fresh.replaced(4, 5, last), 1e-6 * expected);
+}
+
+// Knots off the grid: precise nodes every 5 m on a curve whose knots lie
+// between the 10 m grid's, searched without the local search. The grid
+// alone cannot place them and misses the nodes; given as candidates, the
+// knots are found exactly (round 0 of design_fit.cpp hands the search the
+// last pass's knots this way).
+TEST(DesignDp, CandidateKnotsOffTheGridAreReached) {
+    const FrameDesign truth = curve({0.3, 0.01, 0.0}, 1.0 / 300.0, 203, 263, 407, 468, 700);
+    const std::vector<FrameNode> n = nodes_on(truth, 5.0, 0.0, 1);
+    DesignDpOptions o = over(700.0);
+    o.knot_step_m = 10.0;
+    o.refine = false;
+    EXPECT_GT(design_dp(n, o).data_cost, 1.0);
+    o.knots = {203, 263, 407, 468};
+    const FrameDesign d = design_dp(n, o);
+    ASSERT_EQ(d.elements.size(), truth.elements.size());
+    for (std::size_t i = 0; i < d.elements.size(); ++i) {
+        EXPECT_EQ(d.elements[i].kind, truth.elements[i].kind) << i;
+        EXPECT_NEAR(d.elements[i].s0, truth.elements[i].s0, 1e-9) << i;
+    }
+    EXPECT_LT(d.data_cost, 1e-6);
 }

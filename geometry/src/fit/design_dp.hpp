@@ -59,6 +59,7 @@ struct DesignDpOptions {
     // it is tied as firmly as position and heading.
     bool turnout_ties = false;
     bool refine = true; // the local search after the beam (refine_structure)
+    std::vector<double> knots; // candidate knots besides the grid's (where no node came, too)
 };
 
 struct FrameDesign {

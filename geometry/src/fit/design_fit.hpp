@@ -3,6 +3,7 @@
 // frame (design_dp.hpp), then again with that design as the reference; the
 // node noise re-estimated from each pass's residuals and the nodes
 // reweighted robustly. See docs/geometry.md.
+#include "design_dp.hpp"
 #include "least_squares.hpp"
 #include "railodd/geometry/fit_alignment.hpp"
 
@@ -10,6 +11,10 @@
 #include <vector>
 
 namespace railodd::geometry::fit {
+
+// The search's options as calibrated for a chain of n nodes (L0 penalty,
+// curvature pull, transition prior); span, ties and knots left unset.
+DesignDpOptions calibrated_options(std::size_t n);
 
 // p: distinct nodes in order (at least 2). options.noise_sigma_m > 0 fixes
 // the noise; else it is estimated.
