@@ -25,8 +25,10 @@ constexpr double smoothing_m = 30.0;
 constexpr double penalty_per_log_node = 1.2;
 constexpr double curvature_weight = 300.0;
 constexpr double transition_prior = 3.0;
-// Round 0's extra candidate knots: the last pass's, and this far either side.
+// The search's extra candidate knots: the last design's, and this far
+// either side; searches at most this many times.
 constexpr double knot_shift_m = 2.0;
+constexpr int search_rounds = 2;
 
 // The parameters the design spent on the nodes: the start state and each
 // element's length, a transition's slope besides.
@@ -117,6 +119,48 @@ std::vector<FrameElement> carried(const FrameDesign* previous, const DesignDpOpt
     return st;
 }
 
+// A structure's knots, and a little either side: candidates for the search
+// besides the grid's.
+std::vector<double> knots_around(const std::vector<FrameElement>& st) {
+    std::vector<double> k;
+    for (std::size_t i = 1; i < st.size(); ++i) {
+        for (const double shift : {-knot_shift_m, 0.0, knot_shift_m}) {
+            k.push_back(st[i].s0 + shift);
+        }
+    }
+    return k;
+}
+
+// The search, then again with its own design's knots as candidates while
+// that lowers the cost, starting from the last pass's (`seed`, where given).
+// On the 5 m grid the true structure of a precise chain costs more than a
+// wrong one (dense truth seed 1000 at 0.3 m: 1,370 against 1,197 at its own
+// knots), and a search that can reach the last design's knots compares
+// structures at their best.
+FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o, const std::vector<FrameElement>& seed) {
+    o.knots = knots_around(seed);
+    FrameDesign best = design_dp(nodes, o);
+    for (int r = 1; r < search_rounds; ++r) {
+        o.knots = knots_around(best.elements);
+        FrameDesign d = design_dp(nodes, o);
+        if (!(d.cost < best.cost - 1e-6 * (1.0 + std::abs(best.cost)))) {
+            break;
+        }
+        best = std::move(d);
+    }
+    if (!seed.empty()) {
+        // The search is a beam: on a few sparse nodes with a tied end it can
+        // miss what the last pass found (a turnout's short curve: 535
+        // against 42 on one Cologne chain), and a worse design inflates the
+        // next noise estimate until the design gives up the curve.
+        FrameDesign incumbent = refine_structure(nodes, seed, o);
+        if (incumbent.cost < best.cost) {
+            best = std::move(incumbent);
+        }
+    }
+    return best;
+}
+
 // A chain's tied ends, and whether its curvature may jump there as a
 // turnout's curve starts (design_rules.hpp).
 struct Ties {
@@ -152,30 +196,8 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     o.s1 = std::max(o.s1, o.s0 + 1.0);
     o.turnout_ties = ties.turnout;
     const std::vector<FrameElement> seed = carried(previous, o);
-    if (search) {
-        // The last pass's knots, and a little either side, as candidates
-        // besides the grid's: on the 5 m grid the true structure of a
-        // precise chain costs more than a wrong one (dense truth seed 1000 at
-        // 0.3 m: 1,370 against 1,197 at its own knots), and a search that
-        // can reach the last pass's knots compares structures at their best.
-        for (std::size_t i = 1; i < seed.size(); ++i) {
-            for (const double shift : {-knot_shift_m, 0.0, knot_shift_m}) {
-                o.knots.push_back(seed[i].s0 + shift);
-            }
-        }
-    }
     DesignPass pass;
-    pass.design = seed.empty() || search ? design_dp(nodes, o) : refine_structure(nodes, seed, o);
-    if (search && !seed.empty()) {
-        // The search is a beam: on a few sparse nodes with a tied end it can
-        // miss what the last pass found (a turnout's short curve: 535
-        // against 42 on one Cologne chain), and a worse design inflates the
-        // next noise estimate until the design gives up the curve.
-        FrameDesign incumbent = refine_structure(nodes, seed, o);
-        if (incumbent.cost < pass.design.cost) {
-            pass.design = std::move(incumbent);
-        }
-    }
+    pass.design = search || seed.empty() ? search_design(nodes, o, seed) : refine_structure(nodes, seed, o);
     pass.alignment = to_alignment(ref, pass.design);
     pass.nodes = std::move(nodes);
     pass.options = o;
