@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 using namespace railodd;
@@ -201,10 +202,14 @@ TEST(DesignFit, TheSearchRunsAgainFromItsOwnKnots) {
 // pass's screen left the good ones out (6 and 8 m off the design, 7.6 m off
 // the centreline); taken back in place of the stray, the design follows
 // them. A stray the design would only bend to is not taken back: on dense
-// nodes two strays side by side (4.9 and 9.4 m off) pulled it 4.7 m off.
+// nodes two strays side by side (4.9 and 9.4 m off) pulled it 4.7 m off;
+// at 0.1 m a stray 9.1 m off taken back in place of a good node was
+// followed by a bend through it and the next stray (9.1 m off).
 TEST(DesignFit, ALeftOutNodeIsTakenBackWhereTheDesignThenFollowsIt) {
-    for (const auto& [seed, spacing] : {std::pair{1096, truth::Spacing::osm}, std::pair{1086, truth::Spacing::dense}}) {
-        const truth::TruthRoute r = test::truth_route(seed, 0.3, 0.01, spacing);
+    const std::tuple<int, truth::Spacing, double> routes[] = {
+        {1096, truth::Spacing::osm, 0.3}, {1086, truth::Spacing::dense, 0.3}, {1222, truth::Spacing::dense, 0.1}};
+    for (const auto& [seed, spacing, sigma] : routes) {
+        const truth::TruthRoute r = test::truth_route(seed, sigma, 0.01, spacing);
         const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
         EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.0) << "seed " << seed;
     }
@@ -227,6 +232,18 @@ TEST(DesignFit, ANodeLeftOutBeforeTheStraysIsTakenBackInTheNextSweep) {
     const truth::TruthRoute r = test::truth_route(1002, 0.3, 0.01, truth::Spacing::dense);
     const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
     EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.0);
+}
+
+// A free start before sparse nodes at 0.1 m (a 343 m straight with two
+// nodes on it, then a curve of 890 m): a transition at a chain end pays the
+// length prior where it is longer than the rule, so the start does not
+// swing on a 470 m S-shaped transition across the gap (5.0 m off before).
+TEST(DesignFit, AFreeEndTransitionIsNoLongerThanTheRule) {
+    const truth::TruthRoute r = test::truth_route(1124, 0.1, 0.0, truth::Spacing::sparse);
+    const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
+    const truth::TruthScore s = truth::score(r, fit.alignment);
+    EXPECT_LT(s.deviation_max_m, 1.0);
+    EXPECT_EQ(s.spurious_sign_changes, 0);
 }
 
 // A Cologne branch whose switch node was mapped 2.65 m off the through

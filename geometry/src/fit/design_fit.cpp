@@ -131,36 +131,6 @@ std::vector<double> knots_around(const std::vector<FrameElement>& st) {
     return k;
 }
 
-// The search, then again with its own design's knots as candidates while
-// that lowers the cost, starting from the last pass's (`seed`, where given).
-// On the 5 m grid the true structure of a precise chain costs more than a
-// wrong one (dense truth seed 1000 at 0.3 m: 1,370 against 1,197 at its own
-// knots), and a search that can reach the last design's knots compares
-// structures at their best.
-FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o, const std::vector<FrameElement>& seed) {
-    o.knots = knots_around(seed);
-    FrameDesign best = design_dp(nodes, o);
-    for (int r = 1; r < search_rounds; ++r) {
-        o.knots = knots_around(best.elements);
-        FrameDesign d = design_dp(nodes, o);
-        if (!(d.cost < best.cost - 1e-6 * (1.0 + std::abs(best.cost)))) {
-            break;
-        }
-        best = std::move(d);
-    }
-    if (!seed.empty()) {
-        // The search is a beam: on a few sparse nodes with a tied end it can
-        // miss what the last pass found (a turnout's short curve: 535
-        // against 42 on one Cologne chain), and a worse design inflates the
-        // next noise estimate until the design gives up the curve.
-        FrameDesign incumbent = refine_structure(nodes, seed, o);
-        if (incumbent.cost < best.cost) {
-            best = std::move(incumbent);
-        }
-    }
-    return best;
-}
-
 // A chain's tied ends, and whether its curvature may jump there as a
 // turnout's curve starts (design_rules.hpp).
 struct Ties {
@@ -424,6 +394,30 @@ double tie_jump(const Alignment& a, const std::optional<Pose>& start, const std:
 }
 
 } // namespace
+
+FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o, const std::vector<FrameElement>& seed) {
+    o.knots = knots_around(seed);
+    FrameDesign best = design_dp(nodes, o);
+    for (int r = 1; r < search_rounds; ++r) {
+        o.knots = knots_around(best.elements);
+        FrameDesign d = design_dp(nodes, o);
+        if (!(d.cost < best.cost - 1e-6 * (1.0 + std::abs(best.cost)))) {
+            break;
+        }
+        best = std::move(d);
+    }
+    if (!seed.empty()) {
+        // The search is a beam: on a few sparse nodes with a tied end it can
+        // miss what the last pass found (a turnout's short curve: 535
+        // against 42 on one Cologne chain), and a worse design inflates the
+        // next noise estimate until the design gives up the curve.
+        FrameDesign incumbent = refine_structure(nodes, seed, o);
+        if (incumbent.cost < best.cost) {
+            best = std::move(incumbent);
+        }
+    }
+    return best;
+}
 
 DesignDpOptions calibrated_options(std::size_t n) {
     DesignDpOptions o;

@@ -16,6 +16,14 @@ namespace railodd::geometry::fit {
 // curvature pull, transition prior); span, ties and knots left unset.
 DesignDpOptions calibrated_options(std::size_t n);
 
+// The search, then again with its own design's knots as candidates while
+// that lowers the cost, starting from the last pass's (`seed`, where given).
+// On the 5 m grid the true structure of a precise chain costs more than a
+// wrong one (dense truth seed 1000 at 0.3 m: 1,370 against 1,197 at its own
+// knots), and a search that can reach the last design's knots compares
+// structures at their best.
+FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o, const std::vector<FrameElement>& seed);
+
 // p: distinct nodes in order (at least 2). options.noise_sigma_m > 0 fixes
 // the noise; else it is estimated.
 FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,

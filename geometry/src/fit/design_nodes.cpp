@@ -15,16 +15,18 @@ namespace railodd::geometry::fit {
 
 namespace {
 
-// Whether the design spends two or more knots between node i's neighbours.
-bool bent_to(const DesignPass& pass, std::size_t i) {
-    if (i == 0 || i + 1 >= pass.nodes.size() || pass.nodes[i].w == 0.0) {
+// Whether design d spends two or more knots between node i's neighbours.
+bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t i) {
+    if (i == 0 || i + 1 >= q.size() || q[i].w == 0.0) {
         return false;
     }
-    const auto& el = pass.design.elements;
-    const double lo = std::min(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
-    const double hi = std::max(pass.nodes[i - 1].t, pass.nodes[i + 1].t);
+    const auto& el = d.elements;
+    const double lo = std::min(q[i - 1].t, q[i + 1].t);
+    const double hi = std::max(q[i - 1].t, q[i + 1].t);
     return std::count_if(el.begin() + 1, el.end(), [&](const FrameElement& e) { return e.s0 > lo && e.s0 < hi; }) >= 2;
 }
+
+bool bent_to(const DesignPass& pass, std::size_t i) { return bends_at(pass.design, pass.nodes, i); }
 
 // The structure searched again (design_dp) over the nodes from three before
 // node `first` to three after node `last`, tied to the design where that
@@ -134,12 +136,15 @@ struct Trial {
     std::vector<std::size_t> out, in;
 };
 
-// Whether every node taken back lies within `far` of the trial's design: a
-// stray the design bends to (dense truth seed 1086 at 0.3 m: a node 9.4 m
-// off taken back, the design 4.7 m off toward it) is no node to follow.
+// Whether the trial's design follows every node taken back: within `far`
+// of it, and without bending to it. A stray the design bends to is no node
+// to follow (dense truth seeds at 0.3 and 0.1 m: 1086, a node 9.4 m off
+// taken back and the design 4.7 m off toward it; 1222, one 9.1 m off taken
+// back and followed by a bend through it and another stray, 9.1 m off).
 bool followed(const Reweighed& r, const std::vector<std::size_t>& in, double far) {
-    return std::all_of(in.begin(), in.end(),
-                       [&](std::size_t i) { return std::abs(r.nodes[i].z - design_state(r.design, r.nodes[i].t).z) <= far; });
+    return std::all_of(in.begin(), in.end(), [&](std::size_t i) {
+        return std::abs(r.nodes[i].z - design_state(r.design, r.nodes[i].t).z) <= far && !bends_at(r.design, r.nodes, i);
+    });
 }
 
 // The cheapest of the trials, where it costs less than the pass as it is
