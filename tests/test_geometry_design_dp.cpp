@@ -202,7 +202,7 @@ TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
             const FrameDesign d = solve_structure(n, whole, o);
             double prior = 0.0;
             for (std::size_t i = 0; i < d.elements.size(); ++i) {
-                prior += element_prior(d.elements[i], i == 0 || i + 1 == d.elements.size(), o);
+                prior += element_prior(d.elements[i], i == 0, i + 1 == d.elements.size(), o);
             }
             EXPECT_NEAR(costs.replaced(c.j, c.k, c.w), d.cost + prior, 1e-6 * d.cost) << c.j << " " << c.k << " tied " << tied;
         }

@@ -225,15 +225,6 @@ TEST(DesignFit, AStrayInATightCurveOnSparseNodesIsLeftOut) {
     EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.0);
 }
 
-// Dense nodes at 0.3 m, two strays side by side in a curve of 155 m: the
-// sweep over the nodes leaves out the good node before them first; the
-// second sweep takes it back once the strays are out (5.1 m off in one).
-TEST(DesignFit, ANodeLeftOutBeforeTheStraysIsTakenBackInTheNextSweep) {
-    const truth::TruthRoute r = test::truth_route(1002, 0.3, 0.01, truth::Spacing::dense);
-    const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
-    EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.0);
-}
-
 // A free start before sparse nodes at 0.1 m (a 343 m straight with two
 // nodes on it, then a curve of 890 m): a transition at a chain end pays the
 // length prior where it is longer than the rule, so the start does not

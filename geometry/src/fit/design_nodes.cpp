@@ -356,20 +356,12 @@ std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double fa
 bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
     bool any = false;
     const double far = biweight_cut * pass.sigma;
-    // Twice: a node left out early in a sweep is taken back only in the
-    // next, once the strays after it are out (dense truth seed 1002 at
-    // 0.3 m: a good node left out before the two strays beside it).
-    for (int sweep = 0; sweep < 2; ++sweep) {
-        bool changed = false;
-        for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
-            if (pass.nodes[i].w == 0.0) {
-                changed = (pass.distance[i] > far && take_cheapest(pass, take_back_trials(pass, i, far), weight, far)) || changed;
-            } else if (bent_to(pass, i) || pass.distance[i] > far) {
-                changed = take_cheapest(pass, stray_trials(pass, i, far), weight, far) || changed;
-            }
+    for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
+        if (pass.nodes[i].w == 0.0) {
+            any = (pass.distance[i] > far && take_cheapest(pass, take_back_trials(pass, i, far), weight, far)) || any;
+        } else if (bent_to(pass, i) || pass.distance[i] > far) {
+            any = take_cheapest(pass, stray_trials(pass, i, far), weight, far) || any;
         }
-        any = any || changed;
-        if (!changed) break;
     }
     if (any) {
         pass.alignment = to_alignment(*pass.frame, pass.design);
