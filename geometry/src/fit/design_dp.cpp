@@ -203,17 +203,18 @@ void Search::spawn(double s) {
 // Whether `h`, no cheaper than `by`, is a near copy of it: by's cost at h's
 // likeliest state is no more than h's own there. The future cost of a
 // hypothesis depends only on its element's kind and its current state, so
-// such a copy seldom wins later; left in the
-// beam, copies (one transition opened at every knot of a gap) crowd out the
-// rival structures the next nodes decide between (dense truth seed 1000 at
-// 0.3 m: the true path dropped 1.2 above the best, 48 copies ahead of it).
+// such a copy seldom wins later; left in the beam, copies (one transition
+// opened at every knot of a gap) crowd out the rival structures the next
+// nodes decide between (dense truth seed 1000 at 0.3 m: the true path
+// dropped 1.2 above the best, 48 copies ahead of it).
 bool near_copy(const Hypothesis& h, const Hypothesis& by) {
     if (h.kind != by.kind || h.f.free != by.f.free) {
         return false;
     }
-    // h's likeliest state carried to by's start (the flow over the distance
-    // between their starts, whatever the chainage they are compared at),
-    // less by's own, on by's variables.
+    // h's likeliest state carried to by's start (design::flow(u) * h.arg,
+    // written out: this runs for pairs of hypotheses at every knot), less
+    // by's own, on by's variables. The flow over the distance between the
+    // starts serves whatever chainage they are compared at.
     const double u = (by.start - h.start) / S;
     const design::Vec4& a = h.arg;
     double d[4] = {a(0) + u * (a(1) + u * (0.5 * a(2) + u * a(3) / 6.0)), a(1) + u * (a(2) + 0.5 * u * a(3)),

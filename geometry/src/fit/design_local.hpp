@@ -46,8 +46,10 @@ FrameDesign solved(const std::vector<FrameElement>& st, const ForwardPass& pass)
 
 // Priors on a solved element that no quadratic can state: a transition's
 // length against the one its curvature change calls for (at a free chain
-// end, where it may be cut, only a longer one; at a tied one none), a curvature sign change inside one transition
-// counted as the knot at zero it hides, and no curvature beyond 1/15 m.
+// end, where it may be cut, only a longer one; at a tied one none), a
+// curvature sign change inside one transition counted as the knot at zero
+// it hides, and no curvature beyond 1/15 m. first, last: the element begins
+// or ends the chain.
 double element_prior(const FrameElement& e, bool first, bool last, const DesignDpOptions& o);
 
 class StructureCosts {

@@ -230,18 +230,21 @@ bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach) {
 // of it (frame); 0 where it has fewer.
 double trend_residual(const DesignPass& pass, std::size_t i) {
     const auto& q = pass.nodes;
-    std::vector<std::size_t> k;
+    std::vector<std::size_t> k; // two kept nodes before i, then two after
     for (std::size_t j = i; j > 0 && k.size() < 2;) {
         if (q[--j].w > 0.0) {
             k.insert(k.begin(), j);
         }
+    }
+    if (k.size() < 2) {
+        return 0.0;
     }
     for (std::size_t j = i + 1; j < q.size() && k.size() < 4; ++j) {
         if (q[j].w > 0.0) {
             k.push_back(j);
         }
     }
-    if (k.size() < 4 || k[1] >= i) {
+    if (k.size() < 4) {
         return 0.0;
     }
     double z = 0.0; // Lagrange's cubic through the four, at node i
@@ -292,27 +295,28 @@ bool zigzag(const DesignPass& pass, std::size_t i, double far) {
 // place of such a node: otherwise a far node left out is a stray, and the
 // trials took as long as the rest of the fit on dense nodes at 0.1 m.
 std::vector<Trial> take_back_trials(const DesignPass& pass, std::size_t i, double far) {
+    const bool at_end = near_free_end(pass, i, 3);
     std::vector<Trial> trials{{{}, {i}}};
     for (std::size_t j = i > 2 ? i - 2 : 1; j + 1 < pass.nodes.size() && j <= i + 2; ++j) {
-        const bool suspect = near_free_end(pass, i, 3) || bent_to(pass, j) || pass.distance[j] > far;
+        const bool suspect = at_end || bent_to(pass, j) || pass.distance[j] > far;
         if (j != i && pass.nodes[j].w > 0.0 && suspect) {
             trials.push_back({{j}, {i}});
         }
     }
-    if (trials.size() == 1 && !near_free_end(pass, i, 3)) {
+    if (trials.size() == 1 && !at_end) {
         return {};
     }
     return trials;
 }
-
 
 // The ways of leaving out strays around node i, which the design bends to or
 // lies far from: i or either neighbour alone (the design may follow a stray
 // with no knot beside it and bend at the good node next to it), or i with
 // one of the next two. Away from a free end each must stand out from the
 // kept nodes: a spike alone (or off its neighbours' trend), two side by
-// side a bump or a zigzag, two a node apart each a spike. Beside a free end no turn tells a stray from a
-// curve's start, but a stray still lies off the chord between its
+// side a bump or a zigzag, two a node apart each a spike. Beside a free end
+// no turn tells a stray from a curve's start, but a stray still lies off
+// the chord between its
 // neighbours; a node on it left out lets the free end swing (sparse truth
 // seed 1090 at 0.1 m: a good node beside the free start left out, the start
 // 32 m off on a 433 m transition).
