@@ -249,6 +249,28 @@ TEST(DesignFit, ATiedEndStartsWhereItsTieIs) {
     EXPECT_NEAR(fit.quality.max_m, 2.65, 0.05); // the mapped node is still measured where it is
 }
 
+// Two Cologne branches between two switches whose ties lie 5-9 degrees off
+// the nodes' line: a spur of seven nodes along 800 m of straight track, the
+// middle ones 360-370 m apart (way 575059128), and a link of five along
+// 500 m. Each left out a node on the line of its neighbours as a stray, and
+// the design swung 68 m and 27 m off it between the ties: a node left out
+// costs its offset from the design in units of a stray's.
+TEST(DesignFit, ALeftOutNodeDoesNotLetTheDesignSwingAway) {
+    const std::vector<geometry::Point> spur{{8368.500, 9148.680}, {8370.050, 9179.477}, {8369.660, 9538.097},
+                                            {8369.110, 9912.370}, {8368.766, 9925.719}, {8368.312, 9937.289},
+                                            {8367.276, 9948.846}};
+    const geometry::FitResult a = geometry::fit_alignment(spur, geometry::Pose{8368.301, 9148.711, 1.418013, -0.000409},
+                                                          geometry::Pose{8367.277, 9948.846, 1.718143, 0.001975},
+                                                          design_search());
+    EXPECT_LT(a.quality.max_m, 1.0);
+    const std::vector<geometry::Point> link{{-2462.108, -577.643}, {-2473.092, -561.218}, {-2616.579, -311.098},
+                                            {-2686.119, -189.704}, {-2718.969, -144.632}};
+    const geometry::FitResult b = geometry::fit_alignment(link, geometry::Pose{-2462.097, -577.634, 2.253539, -0.001900},
+                                                          geometry::Pose{-2720.481, -145.511, 2.097512, 0.000005},
+                                                          design_search());
+    EXPECT_LT(b.quality.max_m, 2.0); // the end tie itself lies 1.75 m from the last node
+}
+
 // A branch leaving a straight through track at its switch on a turnout's
 // curve (R 300 m from the switch, no transition): its tie holds position and
 // heading, and the curvature jumps there as the turnout's does. With the
