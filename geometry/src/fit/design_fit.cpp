@@ -407,11 +407,6 @@ FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o
         best = std::move(d);
     }
     if (!seed.empty()) {
-        // Where a last pass's design is given, this is the search's last
-        // run; its windows are searched again (in the first pass as well: 2.1x
-        // the fit time against 1.5x, and an OSM-like truth route at 0.1 m,
-        // seed 1083, 3.3 m off on a hook the next passes kept).
-        best = research_windows(nodes, std::move(best), o);
         // The search is a beam: on a few sparse nodes with a tied end it can
         // miss what the last pass found (a turnout's short curve: 535
         // against 42 on one Cologne chain), and a worse design inflates the

@@ -6,6 +6,8 @@
 // node left out (its own position).
 #include "design_pass.hpp"
 
+#include "design_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,17 +28,65 @@ bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t
 
 bool bent_to(const DesignPass& pass, std::size_t i) { return bends_at(pass.design, pass.nodes, i); }
 
-// The structure searched again over the elements holding the nodes from
-// three before node `first` to three after node `last` (research_span).
+// The structure searched again (design_dp) over the nodes from three before
+// node `first` to three after node `last`, tied to the design where that
+// window ends inside the chain, spliced in and refined within a window's
+// length each way: the local search alone cannot leave a structure several
+// elements deep.
 FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes, std::size_t first, std::size_t last) {
     const std::size_t a = first > 3 ? first - 3 : 0, b = std::min(nodes.size() - 1, last + 3);
+    DesignDpOptions o = pass.options;
+    o.turnout_ties = false; // the window's ties are the design's own, inside the chain
     const auto& el = pass.design.elements;
     const auto holding = [&](double t) {
         return std::find_if(el.begin(), el.end() - 1, [&](const FrameElement& e) { return t <= e.s1; });
     };
-    const double lo = a == 0 ? pass.options.s0 : holding(nodes[a].t)->s0;
-    const double hi = b + 1 == nodes.size() ? pass.options.s1 : holding(nodes[b].t)->s1;
-    return research_span(nodes, pass.design, pass.options, lo, hi);
+    const double lo = a == 0 ? o.s0 : holding(nodes[a].t)->s0, hi = b + 1 == nodes.size() ? o.s1 : holding(nodes[b].t)->s1;
+    if (a > 0) {
+        o.start = design_state(pass.design, lo);
+    }
+    if (b + 1 < nodes.size()) {
+        o.end = design_state(pass.design, hi);
+    }
+    o.s0 = lo;
+    o.s1 = hi;
+    std::vector<FrameNode> window;
+    for (const FrameNode& n : nodes) {
+        if (n.t >= lo && n.t <= hi) {
+            window.push_back(n);
+        }
+    }
+    if (window.empty() || !(hi > lo + 1.0)) {
+        // Nodes out of chainage order (a chain doubling back) can leave the
+        // window empty: no search there.
+        return refine_structure(nodes, pass.design.elements, pass.options, {lo, hi});
+    }
+    const FrameDesign local = design_dp(window, o);
+    std::vector<FrameElement> st;
+    for (FrameElement e : pass.design.elements) {
+        if (e.s0 < lo) {
+            e.s1 = std::min(e.s1, lo);
+            st.push_back(e);
+        }
+    }
+    st.insert(st.end(), local.elements.begin(), local.elements.end());
+    for (FrameElement e : pass.design.elements) {
+        if (e.s1 > hi) {
+            e.s0 = std::max(e.s0, hi);
+            st.push_back(e);
+        }
+    }
+    for (std::size_t j = 1; j < st.size(); ++j) {
+        if (!design::may_follow(st[j - 1].kind, st[j].kind)) {
+            return refine_structure(nodes, pass.design.elements, pass.options, {lo, hi});
+        }
+    }
+    // The refine reaches a window's length beyond it each way: far enough
+    // for the elements the new ones push against, and a long chain's refine
+    // stays local (a whole-chain refine per trial made Cologne's fit run
+    // for over ten minutes).
+    const double reach = hi - lo;
+    return refine_structure(nodes, st, pass.options, {lo - reach, hi + reach});
 }
 
 // How far strays lie from the track, as mappers leave them: mostly a few
