@@ -339,10 +339,9 @@ std::vector<Trial> take_back_trials(const DesignPass& pass, std::size_t i, doubl
 // kept nodes: a spike alone (or off its neighbours' trend), two side by
 // side a bump or a zigzag, two a node apart each a spike. Beside a free end
 // no turn tells a stray from a curve's start, but a stray still lies off
-// the chord between its
-// neighbours; a node on it left out lets the free end swing (sparse truth
-// seed 1090 at 0.1 m: a good node beside the free start left out, the start
-// 32 m off on a 433 m transition).
+// the chord between its neighbours; a node on it left out lets the free end
+// swing (sparse truth seed 1090 at 0.1 m: a good node beside the free start
+// left out, the start 32 m off on a 433 m transition).
 std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double far) {
     const std::size_t n = pass.nodes.size();
     const auto kept = [&](std::size_t j) { return j > 0 && j + 1 < n && pass.nodes[j].w > 0.0; };
