@@ -2,7 +2,7 @@
 // structure it is looking for. Each truth route (data/alignment_truth) is
 // developed in the frame of its own design, its nodes weighted by the true
 // noise, and searched as the fit searches (design_fit.hpp search_design:
-// calibrated options, a second search from the first's knots); the true
+// calibrated options, a first search, then one from its design); the true
 // structure is solved and refined in the same frame. Frame, noise estimate
 // and robust weights play no part: what is left is the search. A search
 // that ends costlier than the true structure did not find the optimum of
@@ -99,7 +99,8 @@ Gap route_gap(int seed, double sigma, truth::Spacing spacing) {
         o.s1 = std::max(o.s1, n.t);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const FrameDesign found = search_design(nodes, o, {});
+    // As the fit runs it: a first search, then one from its design.
+    const FrameDesign found = search_design(nodes, o, search_design(nodes, o, {}).elements);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const FrameDesign best = refine_structure(nodes, true_structure(r.design, o), o);
     return {found.cost - best.cost, o.parameter_penalty, seconds};

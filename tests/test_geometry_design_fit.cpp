@@ -198,6 +198,20 @@ TEST(DesignFit, TheSearchRunsAgainFromItsOwnKnots) {
     EXPECT_LT(s.deviation_max_m, 1.0); // 0.21 m built by gcc, 0.58 by clang
 }
 
+// The last search searches every run of five elements again, tied to the
+// design around it (research_windows): OSM-like truth routes at 0.3 m,
+// seeds 1008 and 1023, 25 and 23 elements for the designs' 22 and 21
+// without.
+TEST(DesignFit, TheLastSearchSearchesItsWindowsAgain) {
+    for (const int seed : {1008, 1023}) {
+        const truth::TruthRoute r = test::truth_route(seed, 0.3, 0.0, truth::Spacing::osm);
+        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, std::nullopt, std::nullopt, design_search());
+        const truth::TruthScore s = truth::score(r, fit.alignment);
+        EXPECT_LE(s.fit_elements, s.design_elements) << "seed " << seed;
+        EXPECT_LT(s.deviation_max_m, 1.0) << "seed " << seed;
+    }
+}
+
 // A stray after two good nodes on OSM-like spacing at 0.3 m: the first
 // pass's screen left the good ones out (6 and 8 m off the design, 7.6 m off
 // the centreline); taken back in place of the stray, the design follows

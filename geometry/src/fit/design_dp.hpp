@@ -82,6 +82,19 @@ FrameDesign refine_structure(const std::vector<FrameNode>& nodes, const std::vec
                              std::pair<double, double> span = {-std::numeric_limits<double>::infinity(),
                                                                std::numeric_limits<double>::infinity()});
 
+// The structure searched again (design_dp) over chainages [lo, hi], tied to
+// the design's state where the span ends inside the chain, spliced in and
+// refined a span's length each way (design_window.cpp): the local search
+// alone cannot leave a structure several elements deep. Only refined where
+// the span holds no node or the splice breaks a design rule.
+FrameDesign research_span(const std::vector<FrameNode>& nodes, const FrameDesign& design, const DesignDpOptions& options,
+                          double lo, double hi);
+
+// Every run of a few elements searched again in turn (research_span), each
+// result taken where the cost falls: a large-neighbourhood search after the
+// beam. Nodes in any order.
+FrameDesign research_windows(const std::vector<FrameNode>& nodes, FrameDesign design, const DesignDpOptions& options);
+
 // The nodes in order of chainage (stable: nodes at one chainage keep theirs).
 std::vector<FrameNode> by_chainage(std::vector<FrameNode> nodes);
 

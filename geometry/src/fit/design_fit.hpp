@@ -17,7 +17,9 @@ namespace railodd::geometry::fit {
 DesignDpOptions calibrated_options(std::size_t n);
 
 // The search, then again with its own design's knots as candidates while
-// that lowers the cost, starting from the last pass's (`seed`, where given).
+// that lowers the cost, starting from the last pass's (`seed`, where given);
+// where a seed is given, its windows searched again (research_windows) and
+// the seed's own structure refined as a rival.
 // On the 5 m grid the true structure of a precise chain costs more than a
 // wrong one (dense truth seed 1000 at 0.3 m: 1,370 against 1,197 at its own
 // knots), and a search that can reach the last design's knots compares

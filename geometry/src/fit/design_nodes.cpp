@@ -6,8 +6,6 @@
 // node left out (its own position).
 #include "design_pass.hpp"
 
-#include "design_rules.hpp"
-
 #include <algorithm>
 #include <cmath>
 
@@ -28,65 +26,47 @@ bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t
 
 bool bent_to(const DesignPass& pass, std::size_t i) { return bends_at(pass.design, pass.nodes, i); }
 
-// The structure searched again (design_dp) over the nodes from three before
-// node `first` to three after node `last`, tied to the design where that
-// window ends inside the chain, spliced in and refined within a window's
-// length each way: the local search alone cannot leave a structure several
-// elements deep.
+// Whether design d bends at node i and back: two or more knots between its
+// neighbours, and its curvature rising and falling between the nodes two
+// away (a bump or an S), not only running from one curve's into the next.
+// Between sparse nodes a transition's two ends often fall in one gap (sparse
+// truth seed 1102 at 0.3 m: a good node beside a stray, taken back with the
+// stray left out, costs 25 less, and the arc's end and the line's start lie
+// in its gap). Between the next nodes a bend through a stray shows as a
+// bump where the nearest show only a rise (dense seed 1222 at 0.1 m).
+bool bumps_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t i) {
+    if (!bends_at(d, q, i)) {
+        return false;
+    }
+    const std::size_t a = i > 1 ? i - 2 : 0, b = std::min(q.size() - 1, i + 2);
+    const double lo = std::min(q[a].t, q[b].t);
+    const double hi = std::max(q[a].t, q[b].t);
+    std::vector<double> k{design_state(d, lo).k};
+    for (const FrameElement& e : d.elements) {
+        if (e.s0 > lo && e.s0 < hi) {
+            k.push_back(e.k0);
+        }
+    }
+    k.push_back(design_state(d, hi).k);
+    bool up = false, down = false;
+    for (std::size_t j = 1; j < k.size(); ++j) {
+        up = up || k[j] > k[j - 1] + 1e-9;
+        down = down || k[j] < k[j - 1] - 1e-9;
+    }
+    return up && down;
+}
+
+// The structure searched again over the elements holding the nodes from
+// three before node `first` to three after node `last` (research_span).
 FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes, std::size_t first, std::size_t last) {
     const std::size_t a = first > 3 ? first - 3 : 0, b = std::min(nodes.size() - 1, last + 3);
-    DesignDpOptions o = pass.options;
-    o.turnout_ties = false; // the window's ties are the design's own, inside the chain
     const auto& el = pass.design.elements;
     const auto holding = [&](double t) {
         return std::find_if(el.begin(), el.end() - 1, [&](const FrameElement& e) { return t <= e.s1; });
     };
-    const double lo = a == 0 ? o.s0 : holding(nodes[a].t)->s0, hi = b + 1 == nodes.size() ? o.s1 : holding(nodes[b].t)->s1;
-    if (a > 0) {
-        o.start = design_state(pass.design, lo);
-    }
-    if (b + 1 < nodes.size()) {
-        o.end = design_state(pass.design, hi);
-    }
-    o.s0 = lo;
-    o.s1 = hi;
-    std::vector<FrameNode> window;
-    for (const FrameNode& n : nodes) {
-        if (n.t >= lo && n.t <= hi) {
-            window.push_back(n);
-        }
-    }
-    if (window.empty() || !(hi > lo + 1.0)) {
-        // Nodes out of chainage order (a chain doubling back) can leave the
-        // window empty: no search there.
-        return refine_structure(nodes, pass.design.elements, pass.options, {lo, hi});
-    }
-    const FrameDesign local = design_dp(window, o);
-    std::vector<FrameElement> st;
-    for (FrameElement e : pass.design.elements) {
-        if (e.s0 < lo) {
-            e.s1 = std::min(e.s1, lo);
-            st.push_back(e);
-        }
-    }
-    st.insert(st.end(), local.elements.begin(), local.elements.end());
-    for (FrameElement e : pass.design.elements) {
-        if (e.s1 > hi) {
-            e.s0 = std::max(e.s0, hi);
-            st.push_back(e);
-        }
-    }
-    for (std::size_t j = 1; j < st.size(); ++j) {
-        if (!design::may_follow(st[j - 1].kind, st[j].kind)) {
-            return refine_structure(nodes, pass.design.elements, pass.options, {lo, hi});
-        }
-    }
-    // The refine reaches a window's length beyond it each way: far enough
-    // for the elements the new ones push against, and a long chain's refine
-    // stays local (a whole-chain refine per trial made Cologne's fit run
-    // for over ten minutes).
-    const double reach = hi - lo;
-    return refine_structure(nodes, st, pass.options, {lo - reach, hi + reach});
+    const double lo = a == 0 ? pass.options.s0 : holding(nodes[a].t)->s0;
+    const double hi = b + 1 == nodes.size() ? pass.options.s1 : holding(nodes[b].t)->s1;
+    return research_span(nodes, pass.design, pass.options, lo, hi);
 }
 
 // How far strays lie from the track, as mappers leave them: mostly a few
@@ -166,7 +146,7 @@ struct Trial {
 // back and followed by a bend through it and another stray, 9.1 m off).
 bool followed(const Reweighed& r, const std::vector<std::size_t>& in, double far) {
     return std::all_of(in.begin(), in.end(), [&](std::size_t i) {
-        return std::abs(r.nodes[i].z - design_state(r.design, r.nodes[i].t).z) <= far && !bends_at(r.design, r.nodes, i);
+        return std::abs(r.nodes[i].z - design_state(r.design, r.nodes[i].t).z) <= far && !bumps_at(r.design, r.nodes, i);
     });
 }
 
@@ -379,7 +359,7 @@ std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double fa
 //   two nodes strays; inside a chain the smoothing spline's screen can pick
 //   the good ones beside a stray: OSM truth seed 1096 at 0.3 m, two good
 //   nodes left out 6 and 8 m off for the stray after them).
-bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
+void settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
     bool any = false;
     const double far = biweight_cut * pass.sigma;
     for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
@@ -392,7 +372,6 @@ bool settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
     if (any) {
         pass.alignment = to_alignment(*pass.frame, pass.design);
     }
-    return any;
 }
 
 void DesignPass::measure() {

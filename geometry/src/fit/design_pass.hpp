@@ -34,8 +34,8 @@ struct DesignPass {
 
 // Which nodes the design follows, settled by model selection (each change
 // kept where the pass's cost, one parameter per node left out, falls); the
-// pass and `weight` (per node: 0 left out) updated. True where any changed.
-bool settle_node_weights(DesignPass& pass, std::vector<double>& weight);
+// pass and `weight` (per node: 0 left out) updated.
+void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 
 // The furthest node the design follows (weight[i] 0: left out). A chain
 // whose left-out strays lie far off is still a railway fit: the strays are
