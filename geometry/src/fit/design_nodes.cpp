@@ -69,26 +69,11 @@ FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes
     return research_span(nodes, pass.design, pass.options, lo, hi);
 }
 
-// How far strays lie from the track, as mappers leave them: mostly a few
-// metres, seldom tens (the truth bench draws 3-10 m). At 20 m a Cologne
-// branch still left out a node on the line of its neighbours, 27 m off.
-constexpr double stray_scale_m = 10.0;
-
-// A node's offset from a design, in units of the stray scale, squared.
-double stray_cost(const FrameDesign& d, const FrameNode& n) {
-    const double off = (n.z - design_state(d, n.t).z) / stray_scale_m;
-    return off * off;
-}
-
 // The pass with nodes `out` left out and `in` taken back, the structure
 // searched again locally; its cost counts one parameter for each node left
-// out (its own position) less one for each taken back, and each stray's
-// offset from the design in units of the stray scale (a mixture's outlier
-// term): leaving out a node costs more the further the design then lies
-// from it. Without, a design could leave out the one node that held it to
-// the track and swing free (Cologne: branches between two switches whose
-// ties disagree with their nodes by 5-9 degrees, a node in a long gap on
-// the line of its neighbours left out, the designs 68 and 27 m off them).
+// out (its own position) less one for each taken back, and the strays'
+// offsets from the design (stray_cost, design_dp.hpp): leaving out a node
+// costs more the further the design then lies from it.
 struct Reweighed {
     std::vector<FrameNode> nodes;
     FrameDesign design;
@@ -112,13 +97,7 @@ Reweighed reweighed(const DesignPass& pass, const std::vector<std::size_t>& out,
     }
     r.design = research(pass, r.nodes, lo, hi);
     const double spent = static_cast<double>(out.size()) - static_cast<double>(in.size());
-    r.cost = r.design.cost + spent * pass.options.parameter_penalty;
-    for (const std::size_t i : out) {
-        r.cost += stray_cost(r.design, r.nodes[i]);
-    }
-    for (const std::size_t i : in) {
-        r.cost -= stray_cost(pass.design, pass.nodes[i]);
-    }
+    r.cost = r.design.cost + stray_cost(r.design, r.nodes) + spent * pass.options.parameter_penalty;
     return r;
 }
 
@@ -154,9 +133,10 @@ bool followed(const Reweighed& r, const std::vector<std::size_t>& in, double far
 // and follows every node it takes back.
 bool take_cheapest(DesignPass& pass, const std::vector<Trial>& trials, std::vector<double>& weight, double far) {
     std::optional<Reweighed> best;
+    const double now = pass.design.cost + stray_cost(pass.design, pass.nodes);
     for (const Trial& t : trials) {
         Reweighed r = reweighed(pass, t.out, t.in);
-        if (r.cost < (best ? best->cost : pass.design.cost) && followed(r, t.in, far)) {
+        if (r.cost < (best ? best->cost : now) && followed(r, t.in, far)) {
             best = std::move(r);
         }
     }

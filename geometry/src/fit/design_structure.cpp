@@ -54,6 +54,17 @@ std::vector<double> frame_residuals(const FrameDesign& d, const std::vector<Fram
     return r;
 }
 
+double stray_cost(const FrameDesign& d, const std::vector<FrameNode>& nodes) {
+    double c = 0.0;
+    for (const FrameNode& n : nodes) {
+        if (n.w == 0.0) {
+            const double off = (n.z - design_state(d, n.t).z) / stray_scale_m;
+            c += off * off;
+        }
+    }
+    return c;
+}
+
 FrameState design_state(const FrameDesign& d, double t) {
     FrameState at = d.start;
     std::size_t j = 0;

@@ -95,7 +95,8 @@ FrameDesign research_windows(const std::vector<FrameNode>& nodes, FrameDesign de
         const auto& el = design.elements;
         const std::size_t k = window_end(el, j);
         FrameDesign d = research_span(nodes, design, o, el[j].s0, el[k - 1].s1);
-        if (d.cost < design.cost - 1e-6 * (1.0 + std::abs(design.cost))) {
+        const double before = design.cost + stray_cost(design, nodes);
+        if (d.cost + stray_cost(d, nodes) < before - 1e-6 * (1.0 + std::abs(before))) {
             design = std::move(d);
         }
     }
