@@ -14,9 +14,9 @@
 
 namespace railodd::geometry::fit {
 
-// Tukey's biweight cut, in units of the noise: a node further off the
-// design than this many sigma is far (left out of the robust weights,
-// suspect to the node tests).
+// The robust weights' cut, in units of the noise (Tukey's biweight's): a
+// node further off the design than this many sigma is far (left out of the
+// robust weights, suspect to the node tests).
 constexpr double biweight_cut = 4.685;
 
 struct DesignPass {
