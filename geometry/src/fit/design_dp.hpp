@@ -91,8 +91,8 @@ FrameDesign research_span(const std::vector<FrameNode>& nodes, const FrameDesign
                           double lo, double hi);
 
 // Every run of a few elements searched again in turn (research_span), each
-// result taken where the cost falls: a large-neighbourhood search after the
-// beam. Nodes in any order.
+// result taken where the cost with the strays' term (stray_cost) falls: a
+// large-neighbourhood search after the beam. Nodes in any order.
 FrameDesign research_windows(const std::vector<FrameNode>& nodes, FrameDesign design, const DesignDpOptions& options);
 
 // The nodes in order of chainage (stable: nodes at one chainage keep theirs).

@@ -72,13 +72,10 @@ double residual_sigma(const DesignPass& pass, const std::vector<double>& weight,
 std::vector<double> robust_weights(const std::vector<double>& d, double sigma) {
     const double c = biweight_cut * sigma;
     std::vector<double> w(d.size(), 1.0);
-    for (std::size_t i = 0; i < d.size(); ++i) {
-        const bool far = d[i] > c;
-        const bool cluster = (i > 0 && d[i - 1] > c) || (i + 1 < d.size() && d[i + 1] > c);
-        if (i == 0 || i + 1 == d.size() || (far && cluster)) {
-            continue;
+    for (std::size_t i = 1; i + 1 < d.size(); ++i) {
+        if (d[i] > c && !(d[i - 1] > c || d[i + 1] > c)) {
+            w[i] = 0.0;
         }
-        w[i] = far ? 0.0 : 1.0;
     }
     return w;
 }

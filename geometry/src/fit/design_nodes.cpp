@@ -3,7 +3,7 @@
 // free end that was the good one of two. Each is a model choice, made by
 // cost: the structure searched again over a window of nodes around it
 // (design_dp), spliced in and refined nearby, with one parameter for each
-// node left out (its own position).
+// node left out (its own position) and the strays' term (stray_cost).
 #include "design_pass.hpp"
 
 #include <algorithm>

@@ -33,8 +33,9 @@ struct DesignPass {
 };
 
 // Which nodes the design follows, settled by model selection (each change
-// kept where the pass's cost, one parameter per node left out, falls); the
-// pass and `weight` (per node: 0 left out) updated.
+// kept where the pass's cost falls, with one parameter per node left out and
+// the strays' term, stray_cost); the pass and `weight` (per node: 0 left
+// out) updated.
 void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 
 // The furthest node the design follows (weight[i] 0: left out). A chain

@@ -91,13 +91,15 @@ FrameDesign research_span(const std::vector<FrameNode>& nodes, const FrameDesign
 }
 
 FrameDesign research_windows(const std::vector<FrameNode>& nodes, FrameDesign design, const DesignDpOptions& o) {
+    double now = design.cost + stray_cost(design, nodes);
     for (std::size_t j = 0; j + 1 < design.elements.size(); j += window_elements / 2) {
         const auto& el = design.elements;
         const std::size_t k = window_end(el, j);
         FrameDesign d = research_span(nodes, design, o, el[j].s0, el[k - 1].s1);
-        const double before = design.cost + stray_cost(design, nodes);
-        if (d.cost + stray_cost(d, nodes) < before - 1e-6 * (1.0 + std::abs(before))) {
+        const double cost = d.cost + stray_cost(d, nodes);
+        if (cost < now - 1e-6 * (1.0 + std::abs(now))) {
             design = std::move(d);
+            now = cost;
         }
     }
     return design;
