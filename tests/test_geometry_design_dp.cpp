@@ -66,6 +66,28 @@ DesignDpOptions over(double s1) {
     return o;
 }
 
+// The known design's nodes every 5 m over [a, b], as a span searched again.
+std::vector<FrameNode> nodes_of_known(double a, double b) {
+    std::vector<FrameNode> n;
+    for (const FrameNode& q : nodes_on(known(), 5.0, 0.0, 1)) {
+        if (q.t >= a && q.t <= b) {
+            n.push_back(q);
+        }
+    }
+    return n;
+}
+
+// A span [a, b] of the known design, its start tied to the design's state
+// after an element of kind `before`, its end free.
+DesignDpOptions span_of_known(double a, double b, ElementKind before) {
+    DesignDpOptions o = over(b);
+    o.s0 = a;
+    o.knot_step_m = 10.0;
+    o.start = design_state(known(), a);
+    o.before = before;
+    return o;
+}
+
 } // namespace
 
 TEST(DesignDp, RecoversAKnownDesignFromNodesOnIt) {
@@ -313,4 +335,32 @@ TEST(DesignDp, ATransitionIsShortenedAboutItsMiddle) {
     EXPECT_NEAR(d.elements[1].s0, 415.0, 1.0);
     EXPECT_NEAR(d.elements[1].s1, 460.0, 1.0);
     EXPECT_LT(d.cost, solve_structure(n, start, o).cost);
+}
+
+// A span searched again after a transition into a curve (research_span): its
+// start is tied at the curve's curvature, which makes a transition of no
+// slope one parameter against an arc's two; but a transition after a
+// transition meets it at zero curvature, so the span must open with the
+// arc (OSM-like truth seed 1041 at 2 m: the spliced span cost 183 more,
+// and the window that would have found a reverse curve's straight was
+// lost).
+TEST(DesignDp, ASpanOpensAsTheElementBeforeItAllows) {
+    const DesignDpOptions o = span_of_known(260.0, 400.0, ElementKind::transition);
+    const FrameDesign d = design_dp(nodes_of_known(260.0, 400.0), o);
+    ASSERT_EQ(d.elements.size(), 1u);
+    EXPECT_EQ(d.elements[0].kind, ElementKind::arc);
+    EXPECT_NEAR(d.elements[0].k0, 1.0 / 300.0, 1e-9);
+}
+
+// A span that starts inside a line may go on with it: the two are one
+// element, whose length was paid for before the span.
+TEST(DesignDp, ASpanMayContinueTheLineBeforeIt) {
+    const DesignDpOptions o = span_of_known(100.0, 700.0, ElementKind::line);
+    const FrameDesign d = design_dp(nodes_of_known(100.0, 700.0), o);
+    ASSERT_EQ(d.elements.size(), 5u);
+    EXPECT_EQ(d.elements[0].kind, ElementKind::line);
+    EXPECT_NEAR(d.elements[0].s1, 200.0, 1e-6);
+    // Transition, arc (two), transition and line: five parameters; the first
+    // line none.
+    EXPECT_NEAR(d.cost, 5.0 * o.parameter_penalty, 1e-3);
 }

@@ -1,6 +1,8 @@
 // The design search's frame (geometry/src/fit/reference_line.hpp): where a
-// tied end's pose lands in it.
+// tied end's pose lands in it, and a design in it taken back to the map.
 #include "fit/reference_line.hpp"
+
+#include "railodd/geometry/indexed_alignment.hpp"
 
 #include <gtest/gtest.h>
 
@@ -53,4 +55,43 @@ TEST(ReferenceLine, TiedEndOfALoopLandsAtTheEnd) {
     double t0 = 0.0;
     fit::frame_state(r, start, t0);
     EXPECT_NEAR(t0, 0.0, 1e-9);
+}
+
+// A design that runs beside its reference at a constant offset, through a
+// curve of R 200 m that turns 86 degrees: on the map it is the parallel
+// curve. Its arcs are shorter and tighter than their chainage says; taken
+// at the frame's lengths, its exit turned by the offset times one less the
+// cosine of the angle (0.46 m here) and kept that heading error.
+TEST(ReferenceLine, ADesignBesideItsReferenceIsTheParallelCurveOnTheMap) {
+    const double k = 1.0 / 200.0;
+    Alignment ref;
+    ref.primitives = {make_line(100.0), make_spiral(50.0, 0.0, k), make_arc(250.0, k), make_spiral(50.0, k, 0.0),
+                      make_line(800.0)};
+    const fit::ReferenceLine r = fit::alignment_reference(ref, 2.0);
+    const fit::ElementKind kinds[] = {fit::ElementKind::line, fit::ElementKind::transition, fit::ElementKind::arc,
+                                      fit::ElementKind::transition, fit::ElementKind::line};
+    const std::vector<Pose> starts = primitive_starts(ref);
+    for (const double offset : {0.5, -0.5, 2.0}) {
+        fit::FrameDesign d;
+        d.start = {offset, 0.0, 0.0};
+        double s = 0.0;
+        for (std::size_t i = 0; i < ref.primitives.size(); ++i) {
+            const Primitive& p = ref.primitives[i];
+            d.elements.push_back({kinds[i], s, s + p.length, p.curv_start, p.curv_end});
+            s += p.length;
+        }
+        const IndexedAlignment map(fit::to_alignment(r, d));
+        double worst = 0.0, exit = 0.0;
+        for (std::size_t i = 0; i < ref.primitives.size(); ++i) {
+            for (double u = 0.0; u < ref.primitives[i].length; u += 10.0) {
+                const Pose q = evaluate(starts[i], ref.primitives[i], u);
+                const double d_m = map.project(q.x - offset * std::sin(q.hdg), q.y + offset * std::cos(q.hdg)).distance;
+                worst = std::max(worst, d_m);
+                exit = i == 4 ? std::max(exit, d_m) : exit;
+            }
+        }
+        // Second order in the offset: 0.06 m at 0.5 m, 0.25 m at 2 m.
+        EXPECT_LT(worst, 0.1 * offset * offset + 0.05) << "offset " << offset;
+        EXPECT_LT(exit, 0.1 * offset * offset + 0.05) << "offset " << offset;
+    }
 }

@@ -65,9 +65,12 @@ private:
 
 void Search::seed() {
     for (const ElementKind k : design::kinds) {
+        if (o_.before && !design::may_adjoin(*o_.before, k)) {
+            continue;
+        }
         Hypothesis h;
         h.f = design::first_element(k, o_);
-        h.f.c += design::element_penalty(k, o_, !o_.start);
+        h.f.c += design::first_penalty(k, o_, !o_.start);
         h.start = o_.s0;
         h.covered = o_.s0;
         h.kind = k;
@@ -280,11 +283,19 @@ void Search::keep_best() {
 std::vector<FrameElement> Search::best_path(double s1) {
     double best = std::numeric_limits<double>::infinity();
     int at = -1;
+    // An element the one after the span may follow, where the beam kept one
+    // (research_span refines the design as it was where none).
+    const bool any_follows = std::any_of(live_.begin(), live_.end(), [&](const Hypothesis& h) {
+        return !o_.after || design::may_adjoin(*o_.after, h.kind);
+    });
     for (const Hypothesis& h : live_) {
+        if (any_follows && o_.after && !design::may_adjoin(*o_.after, h.kind)) {
+            continue;
+        }
         // The last element at a free end: a transition's curvature there is
         // one more parameter.
         const bool free_transition = !o_.end && h.kind == ElementKind::transition;
-        const double v = design::close_chain(h.f, (s1 - h.start) / S, o_) +
+        const double v = design::close_chain(h.f, (s1 - h.start) / S, h.kind, o_) +
                          (free_transition ? design::element_penalty(h.kind, o_, true) -
                                                 design::element_penalty(h.kind, o_, false)
                                           : 0.0);

@@ -54,6 +54,14 @@ struct DesignDpOptions {
     std::size_t spawn = 3;  // parent elements each new element may follow at a knot, and histories kept per element
     double prune_margin = -1.0; // hypotheses this far above the best are dropped; < 0: 4 penalties + 20
     std::optional<FrameState> start, end; // tied ends
+    // The kinds of the elements beyond tied ends inside a chain (a span
+    // searched again, research_span): the first and last elements follow and
+    // precede them by the design rules, two transitions meeting at zero
+    // curvature. Without, a span after a transition into a curve opened with
+    // a transition from the curve's curvature, which the splice forbids
+    // (OSM-like truth seed 1041 at 2 m: its window cost 183 more spliced, and
+    // a reverse curve's 333 m straight stayed missing, 7.9 m off).
+    std::optional<ElementKind> before, after;
     // The ties are switches: the curvature may jump there, as a turnout's
     // curve starts (design_rules.hpp); otherwise (a window inside a chain)
     // it is tied as firmly as position and heading.
@@ -119,6 +127,9 @@ double stray_cost(const FrameDesign& design, const std::vector<FrameNode>& nodes
 
 // The design's state at chainage t (the first and last elements extended).
 FrameState design_state(const FrameDesign& design, double t);
+
+// The state u past the start of element e, from its start state.
+FrameState state_along(const FrameElement& e, const FrameState& start, double u);
 
 // Nodes in any order; at least one. Throws std::invalid_argument for an
 // empty range or no nodes.

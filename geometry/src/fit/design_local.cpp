@@ -72,6 +72,8 @@ StructureCosts::StructureCosts(const std::vector<FrameNode>& nodes, const Design
     mirror_options_.s1 = -o.s0;
     mirror_options_.start = o.end ? std::optional<FrameState>(mirror(*o.end)) : std::nullopt;
     mirror_options_.end = o.start ? std::optional<FrameState>(mirror(*o.start)) : std::nullopt;
+    mirror_options_.before = o.after;
+    mirror_options_.after = o.before;
 }
 
 void StructureCosts::reset(const std::vector<FrameElement>& st) {
@@ -108,13 +110,19 @@ bool StructureCosts::allowed(std::size_t j, std::size_t k, const std::vector<Fra
         if (!(len > 0.0) || (!chain_last && len < design::min_length(w[i].kind, o_) - 1e-9)) {
             return false;
         }
+        if (i == 0 && j == 0 && o_.before && !design::may_adjoin(*o_.before, w[i].kind)) {
+            return false;
+        }
         const bool has_prev = i > 0 || j > 0;
         const ElementKind prev = i > 0 ? w[i - 1].kind : (j > 0 ? st_[j - 1].kind : ElementKind::line);
         if (has_prev && !design::may_follow(prev, w[i].kind)) {
             return false;
         }
     }
-    return k == m || design::may_follow(w.back().kind, st_[k].kind);
+    if (k == m) {
+        return !o_.after || design::may_adjoin(*o_.after, w.back().kind);
+    }
+    return design::may_follow(w.back().kind, st_[k].kind);
 }
 
 std::size_t StructureCosts::nodes_after(double s) const {
@@ -148,14 +156,14 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
         update->knots.assign(w.size() + 1, Quad{});
         knots = &update->knots;
     }
-    if (!walk(f, w, n_, next, end, o_, j == 0 && !o_.start, k == m && !o_.end, &maps, knots)) {
+    if (!walk(f, w, n_, next, end, o_, j == 0, k == m && !o_.end, &maps, knots)) {
         return infinite;
     }
     const double u = (w.back().s1 - w.back().s0) / S;
     Vec4 x;
     double cost = 0.0;
     if (k == m) {
-        cost = design::close_chain(f, u, o_, &x);
+        cost = design::close_chain(f, u, w.back().kind, o_, &x);
     } else {
         Quad g = design::to_knot(f, u, &maps.back());
         if (update) {
@@ -210,7 +218,7 @@ void StructureCosts::valid_up_to(std::size_t j) {
         const std::vector<FrameElement> w{st_[v]};
         Quad f;
         open_at(v, w[0].kind, f);
-        walk(f, w, n_, v == 0 ? 0 : nodes_after(st_[v - 1].s1), nodes_after(st_[v].s1), o_, v == 0 && !o_.start, false,
+        walk(f, w, n_, v == 0 ? 0 : nodes_after(st_[v - 1].s1), nodes_after(st_[v].s1), o_, v == 0, false,
              nullptr, nullptr);
         forward_[v + 1] = design::to_knot(f, (w[0].s1 - w[0].s0) / S);
         ++forward_valid_;

@@ -16,8 +16,10 @@ namespace railodd::geometry::fit {
 
 // A run of elements from the cost f of its first, already open: the nodes
 // [next, end) in, its first element's penalty, every knot crossed by the
-// design rules and the next element's penalty added; the run's first and
-// last elements may sit at a free chain end (their penalty says so).
+// design rules and the next element's penalty added; the run's first
+// element may start the chain (at_chain_start: free or tied, or continuing
+// the element before a span) and its last end it at a free end (their
+// penalties say so).
 // maps[i] / knots[i + 1], where given, receive the knot after w[i] (the knot
 // cost before the next element opens). False where a knot forbids the next
 // element; f ends as the last element's cost. Nodes sorted by t; a node at a
@@ -25,7 +27,7 @@ namespace railodd::geometry::fit {
 // it (the backward pass runs along the mirrored chain, and a node counted on
 // both sides of a window's end cost every trial there its residual twice).
 bool walk(design::Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& nodes, std::size_t next,
-          std::size_t end, const DesignDpOptions& o, bool first_at_free_end, bool last_at_free_end,
+          std::size_t end, const DesignDpOptions& o, bool at_chain_start, bool last_at_free_end,
           std::vector<design::KnotMap>* maps, std::vector<design::Quad>* knots, bool at_knot_after = false);
 
 // The forward pass over a whole structure: its cost, the knot costs before

@@ -8,6 +8,14 @@ bool may_follow(ElementKind before, ElementKind after) {
     return before == ElementKind::transition || after == ElementKind::transition;
 }
 
+bool continues(ElementKind beyond, ElementKind kind) { return kind == beyond && kind != ElementKind::transition; }
+
+bool may_adjoin(ElementKind beyond, ElementKind kind) { return may_follow(beyond, kind) || continues(beyond, kind); }
+
+double first_penalty(ElementKind kind, const DesignDpOptions& o, bool at_free_end) {
+    return o.before && continues(*o.before, kind) ? 0.0 : element_penalty(kind, o, at_free_end);
+}
+
 double min_length(ElementKind k, const DesignDpOptions& o) {
     return k == ElementKind::line ? o.min_line_m : k == ElementKind::arc ? o.min_arc_m : o.min_transition_m;
 }
@@ -24,6 +32,9 @@ void add_free_end(Quad& f, double u) {
 
 Quad first_element(ElementKind kind, const DesignDpOptions& o) {
     Quad f = empty_quad(first_free(kind));
+    if (o.before == ElementKind::transition && kind == ElementKind::transition) {
+        fix_zero(f, 2);
+    }
     if (o.start) {
         add_tie(f, scaled(*o.start), tie_weight, o.turnout_ties ? turnout_weight : tie_weight);
     } else {
@@ -72,16 +83,20 @@ void add_nodes(Quad& f, const std::vector<FrameNode>& n, std::size_t first, std:
     f.c += c;
 }
 
-double close_chain(Quad f, double u, const DesignDpOptions& o, Vec4* start) {
+double close_chain(Quad f, double u, ElementKind kind, const DesignDpOptions& o, Vec4* start) {
     if (!o.end) {
         add_free_end(f, u);
         return minimum(f, start);
     }
     KnotMap map;
     Quad g = to_knot(f, u, &map);
+    if (o.after == ElementKind::transition && kind == ElementKind::transition) {
+        fix_zero(g, 2);
+    }
     add_tie(g, scaled(*o.end), tie_weight, o.turnout_ties ? turnout_weight : tie_weight);
     Vec4 y;
-    const double cost = minimum(g, &y);
+    const double refund = o.after && continues(*o.after, kind) ? element_penalty(kind, o, false) : 0.0;
+    const double cost = minimum(g, &y) - refund;
     if (start) {
         y(3) = 0.0;
         *start = start_from_knot(map, y);

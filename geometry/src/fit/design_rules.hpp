@@ -32,6 +32,13 @@ Vec4 scaled(const FrameState& s);
 // transitions meet at zero curvature (a reverse curve) or at an arc.
 bool may_follow(ElementKind before, ElementKind after);
 
+// Whether a span's first (last) element may be `kind` beside the element
+// of kind `beyond` past its tied end (DesignDpOptions::before, after): by
+// the design rules, or as that element's continuation, a line or an arc
+// going on past the tie (research_span merges the two; `continues`).
+bool continues(ElementKind beyond, ElementKind kind);
+bool may_adjoin(ElementKind beyond, ElementKind kind);
+
 // An element's shortest length, unless it ends the chain.
 double min_length(ElementKind kind, const DesignDpOptions& o);
 
@@ -40,6 +47,10 @@ double min_length(ElementKind kind, const DesignDpOptions& o);
 // (its curvature there is free: a chain that is not tied starts and ends
 // straight or in a curve, seldom inside a transition).
 double element_penalty(ElementKind kind, const DesignDpOptions& o, bool at_free_end);
+
+// The penalty of a chain's first element: none where it continues the
+// element before a span.
+double first_penalty(ElementKind kind, const DesignDpOptions& o, bool at_free_end);
 
 // A free chain end's curvature held weakly to zero (sd 1/500 m): a chain
 // cut inside a curve keeps it for little, while a hook across the gap to
@@ -54,9 +65,10 @@ Quad first_element(ElementKind kind, const DesignDpOptions& o);
 // The nodes [first, last) into the cost of an element starting at s0.
 void add_nodes(Quad& f, const std::vector<FrameNode>& n, std::size_t first, std::size_t last, double s0);
 
-// The cost of a chain whose last element's cost is f, that element u
-// (scaled) long: its end tied, or free. The last element's start state in
+// The cost of a chain whose last element, of `kind`, has the cost f and is
+// u (scaled) long: its end tied, or free; its penalty taken back where it
+// continues the element after a span. The last element's start state in
 // *start (where given).
-double close_chain(Quad f, double u, const DesignDpOptions& o, Vec4* start = nullptr);
+double close_chain(Quad f, double u, ElementKind kind, const DesignDpOptions& o, Vec4* start = nullptr);
 
 } // namespace railodd::geometry::fit::design

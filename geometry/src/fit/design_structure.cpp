@@ -35,6 +35,10 @@ FrameState along(const FrameElement& e, double z, double dz, double u) {
 
 } // namespace
 
+FrameState state_along(const FrameElement& e, const FrameState& start, double u) {
+    return along(e, start.z, start.dz, u);
+}
+
 std::vector<double> frame_residuals(const FrameDesign& d, const std::vector<FrameNode>& nodes) {
     std::vector<std::size_t> order(nodes.size());
     for (std::size_t i = 0; i < order.size(); ++i) {
@@ -76,12 +80,13 @@ FrameState design_state(const FrameDesign& d, double t) {
 }
 
 bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& n, std::size_t next,
-          std::size_t end, const DesignDpOptions& o, bool first_at_free_end, bool last_at_free_end,
+          std::size_t end, const DesignDpOptions& o, bool at_chain_start, bool last_at_free_end,
           std::vector<design::KnotMap>* maps, std::vector<Quad>* knots, bool at_knot_after) {
     const auto free_end = [&](std::size_t i) {
-        return (i == 0 && first_at_free_end) || (i + 1 == w.size() && last_at_free_end);
+        return (i == 0 && at_chain_start && !o.start) || (i + 1 == w.size() && last_at_free_end);
     };
-    f.c += design::element_penalty(w.front().kind, o, free_end(0));
+    f.c += at_chain_start ? design::first_penalty(w.front().kind, o, free_end(0))
+                          : design::element_penalty(w.front().kind, o, free_end(0));
     for (std::size_t i = 0;; ++i) {
         const FrameElement& e = w[i];
         const bool last = i + 1 == w.size();
@@ -119,10 +124,10 @@ ForwardPass forward_pass(const std::vector<FrameNode>& n, const std::vector<Fram
     r.knots.assign(st.size() + 1, Quad{});
     r.maps.assign(st.size(), design::KnotMap{});
     Quad f = design::first_element(st.front().kind, o);
-    if (!walk(f, st, n, 0, n.size(), o, !o.start, !o.end, &r.maps, &r.knots, at_knot_after)) {
+    if (!walk(f, st, n, 0, n.size(), o, true, !o.end, &r.maps, &r.knots, at_knot_after)) {
         throw std::invalid_argument("solve_structure: the design rules forbid this sequence");
     }
-    r.cost = design::close_chain(f, (st.back().s1 - st.back().s0) / S, o, &r.last_start);
+    r.cost = design::close_chain(f, (st.back().s1 - st.back().s0) / S, st.back().kind, o, &r.last_start);
     return r;
 }
 
