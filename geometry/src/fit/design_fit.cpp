@@ -310,12 +310,11 @@ double pass_cost(const DesignPass& pass, const std::vector<double>& on_map, doub
     return c + pass.options.parameter_penalty * static_cast<double>(parameters(pass.design));
 }
 
-// Whether the pass's design lies on the map otherwise than in its frame: a
-// node's distance differs by more than a tenth of the noise (0.1 m at
-// least).
-bool drifted(const DesignPass& pass, const std::vector<Point2>& p) {
-    const std::vector<double> on_map = map_distances(pass.alignment, p);
-    for (std::size_t i = 0; i < p.size(); ++i) {
+// Whether the pass's design lies on the map (its nodes' distances there:
+// on_map) otherwise than in its frame: a node's distance differs by more
+// than a tenth of the noise (0.1 m at least).
+bool drifted(const DesignPass& pass, const std::vector<double>& on_map) {
+    for (std::size_t i = 0; i < on_map.size(); ++i) {
         if (std::abs(on_map[i] - pass.distance[i]) > std::max(0.1, 0.1 * pass.sigma)) {
             return true;
         }
@@ -330,15 +329,23 @@ bool drifted(const DesignPass& pass, const std::vector<Point2>& p) {
 // nodes on the design in the frame), and a first pass fitted at too low a
 // noise leaves a wiggly reference (seed 1016 at 2 m: 17 m off on the map,
 // 6 m in the frame, and the pass refused).
-DesignPass next_pass(const DesignPass& pass, const std::vector<Point2>& p, const std::vector<double>& weight,
-                     double sigma, const Ties& ties, Search search) {
+// With it, its nodes' distances on the map (map_distances).
+struct NextPass {
+    DesignPass pass;
+    std::vector<double> on_map;
+};
+NextPass next_pass(const DesignPass& pass, const std::vector<Point2>& p, const std::vector<double>& weight, double sigma,
+                   const Ties& ties, Search search) {
     const FrameDesign previous = map_design(pass);
-    DesignPass next = run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, ties, &previous,
-                               search);
-    if (drifted(next, p)) {
-        const FrameDesign own = map_design(next);
-        next = run_pass(alignment_reference(next.alignment, reference_step_m), p, weight, sigma, ties, &own,
-                        Search::local);
+    NextPass next{run_pass(alignment_reference(pass.alignment, reference_step_m), p, weight, sigma, ties, &previous,
+                           search),
+                  {}};
+    next.on_map = map_distances(next.pass.alignment, p);
+    if (drifted(next.pass, next.on_map)) {
+        const FrameDesign own = map_design(next.pass);
+        next.pass = run_pass(alignment_reference(next.pass.alignment, reference_step_m), p, weight, sigma, ties, &own,
+                             Search::local);
+        next.on_map = map_distances(next.pass.alignment, p);
     }
     return next;
 }
@@ -403,21 +410,20 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
         std::vector<double> w = robust_weights(pass.distance, next);
-        DesignPass tried = next_pass(pass, p, w, next, ties, round == 0 ? Search::whole : Search::local);
-        std::vector<double> tried_on_map = map_distances(tried.alignment, p);
-        if (pass_cost(tried, tried_on_map, next) > pass_cost(pass, on_map, next) + pass.options.parameter_penalty) {
+        NextPass tried = next_pass(pass, p, w, next, ties, round == 0 ? Search::whole : Search::local);
+        if (pass_cost(tried.pass, tried.on_map, next) > pass_cost(pass, on_map, next) + pass.options.parameter_penalty) {
             break;
         }
         sigma = next;
         weight = std::move(w);
-        pass = std::move(tried);
-        on_map = std::move(tried_on_map);
+        pass = std::move(tried.pass);
+        on_map = std::move(tried.on_map);
         if (settled) {
             break;
         }
     }
     settle_node_weights(pass, weight);
-    pass = next_pass(pass, p, weight, sigma, ties, Search::windows);
+    pass = next_pass(pass, p, weight, sigma, ties, Search::windows).pass;
     std::vector<Point> all, followed;
     for (std::size_t i = 0; i < p.size(); ++i) {
         all.push_back({mapped[i].x, mapped[i].y});

@@ -345,8 +345,11 @@ std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double fa
 std::optional<std::size_t> next_suspect(const DesignPass& pass, const std::vector<char>& tried, double far) {
     std::optional<std::size_t> best;
     for (std::size_t i = 1; i + 1 < pass.nodes.size(); ++i) {
-        const bool suspect = pass.distance[i] > far || (pass.nodes[i].w > 0.0 && bent_to(pass, i));
-        if (!tried[i] && suspect && (!best || pass.distance[i] > pass.distance[*best])) {
+        // Cheapest tests first: bent_to walks the design's elements.
+        if (tried[i] || (best && !(pass.distance[i] > pass.distance[*best]))) {
+            continue;
+        }
+        if (pass.distance[i] > far || (pass.nodes[i].w > 0.0 && bent_to(pass, i))) {
             best = i;
         }
     }
