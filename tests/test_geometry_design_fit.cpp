@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -86,27 +87,47 @@ TEST(DesignFit, SparseNodesKeepTheElementCountAndTheNoise) {
     EXPECT_LT(ratio[ratio.size() / 2], 1.2);
 }
 
+// Within the chain fit's tolerances (0.1 mm, 1e-6 rad; chain_fit.cpp splices
+// a stretch by corners beyond them), and with the routes turned so that their
+// headings run past pi: the ties' headings are normalised, the design's
+// integrated. Counted as a full turn off, the end was never met and the
+// frame's design, a fraction of a millimetre off, was kept (VDE 8.2: 58 of
+// 160 spliced ends).
 TEST(DesignFit, TiedEndsAreMet) {
     truth::TruthOptions t;
     t.sigma_m = 0.3;
     t.outlier_fraction = 0.0;
     t.length_m = 3000.0;
     for (int seed = 1000; seed < 1005; ++seed) {
-        const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), t);
-        const geometry::Pose start = geometry::evaluate(r.design, 0.0);
-        const geometry::Pose end = geometry::evaluate(r.design, geometry::length(r.design));
-        std::vector<geometry::Point> nodes = r.nodes;
-        nodes.front() = {start.x, start.y};
-        nodes.back() = {end.x, end.y};
-        const geometry::FitResult fit = geometry::fit_alignment(nodes, start, end, design_search());
-        const geometry::Pose a = geometry::evaluate(fit.alignment, 0.0);
-        const geometry::Pose b = geometry::evaluate(fit.alignment, geometry::length(fit.alignment));
-        EXPECT_NEAR(a.x, start.x, 1e-6) << "seed " << seed;
-        EXPECT_NEAR(a.y, start.y, 1e-6) << "seed " << seed;
-        EXPECT_NEAR(a.hdg, start.hdg, 1e-8) << "seed " << seed;
-        EXPECT_LT(std::hypot(b.x - end.x, b.y - end.y), 1e-3) << "seed " << seed;
-        EXPECT_NEAR(std::remainder(b.hdg - end.hdg, 2 * M_PI), 0.0, 1e-4) << "seed " << seed;
-        EXPECT_LT(truth::score(r, fit.alignment).deviation_max_m, 1.5) << "seed " << seed;
+        for (const double turn : {0.0, 3.0, -3.0}) {
+            const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), t);
+            const auto turned = [](geometry::Pose q, double by) {
+                const double c = std::cos(by), s = std::sin(by);
+                return geometry::Pose{c * q.x - s * q.y, s * q.x + c * q.y, std::remainder(q.hdg + by, 2 * M_PI),
+                                      q.curvature};
+            };
+            const geometry::Pose start = turned(geometry::evaluate(r.design, 0.0), turn);
+            const geometry::Pose end = turned(geometry::evaluate(r.design, geometry::length(r.design)), turn);
+            std::vector<geometry::Point> nodes;
+            for (const geometry::Point& q : r.nodes) {
+                const geometry::Pose m = turned({q.x, q.y, 0.0, 0.0}, turn);
+                nodes.push_back({m.x, m.y});
+            }
+            nodes.front() = {start.x, start.y};
+            nodes.back() = {end.x, end.y};
+            const geometry::FitResult fit = geometry::fit_alignment(nodes, start, end, design_search());
+            const geometry::Pose a = geometry::evaluate(fit.alignment, 0.0);
+            const geometry::Pose b = geometry::evaluate(fit.alignment, geometry::length(fit.alignment));
+            const std::string at = "seed " + std::to_string(seed) + " turned " + std::to_string(turn);
+            EXPECT_NEAR(a.x, start.x, 1e-6) << at;
+            EXPECT_NEAR(a.y, start.y, 1e-6) << at;
+            EXPECT_NEAR(a.hdg, start.hdg, 1e-8) << at;
+            EXPECT_LT(std::hypot(b.x - end.x, b.y - end.y), 1e-4) << at;
+            EXPECT_NEAR(std::remainder(b.hdg - end.hdg, 2 * M_PI), 0.0, 1e-6) << at;
+            geometry::Alignment back = fit.alignment;
+            back.start = turned(back.start, -turn);
+            EXPECT_LT(truth::score(r, back).deviation_max_m, 1.5) << at;
+        }
     }
 }
 

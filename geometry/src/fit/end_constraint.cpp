@@ -1,5 +1,6 @@
 #include "end_constraint.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace railodd::geometry::fit {
@@ -10,7 +11,9 @@ Eigen::VectorXd end_gap(const CurvatureModel& m, const Pose& end, const Pose& ta
     Eigen::VectorXd c(static_cast<long>(end_rows(m)));
     c[0] = end.x - target.x;
     c[1] = end.y - target.y;
-    c[2] = end_heading_scale * (end.hdg - target.hdg);
+    // Headings a turn apart are one heading (a chain's integrated heading
+    // runs past pi; a tie's is normalised).
+    c[2] = end_heading_scale * std::remainder(end.hdg - target.hdg, 2.0 * std::acos(-1.0));
     if (c.size() == 4) {
         c[3] = end_curvature_scale * (end.curvature - target.curvature);
     }
@@ -79,6 +82,52 @@ double project_onto_end(Eigen::VectorXd& values, const Eigen::LDLT<Eigen::Matrix
     }
     apply(values); // the model holds the values returned
     return best;
+}
+
+bool meet_end(CurvatureModel& m, const Pose& target) {
+    // Enough segments for a line's, a transition's and an arc's worth of
+    // freedom whatever the last few are.
+    constexpr std::size_t reach = 8;
+    const ParameterMap map(m);
+    const std::size_t first = m.segments() > reach ? m.segments() - reach : 0;
+    std::vector<std::size_t> moved;
+    for (std::size_t i = 0; i < map.size(); ++i) {
+        if (!map.is_start(i) && map.influence(i).second >= first) {
+            moved.push_back(i);
+        }
+    }
+    const auto gap = [&](const CurvatureModel& x) { return end_gap(x, x.knot_poses().back(), target); };
+    const Eigen::VectorXd c = gap(m);
+    const std::vector<double> base = map.get(m);
+    Eigen::MatrixXd C(c.size(), static_cast<long>(moved.size()));
+    Eigen::VectorXd metric(static_cast<long>(moved.size()));
+    CurvatureModel nudged = m;
+    for (std::size_t j = 0; j < moved.size(); ++j) {
+        const std::size_t i = moved[j];
+        const double h = map.is_curvature(i) ? 1e-8 : 1e-5;
+        map.set_one(nudged, i, base[i] + h);
+        C.col(static_cast<long>(j)) = (gap(nudged) - c) / h;
+        map.set_one(nudged, i, base[i]);
+        metric[static_cast<long>(j)] = map.is_curvature(i) ? end_curvature_scale * end_curvature_scale : 1.0;
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> A(Eigen::MatrixXd(metric.asDiagonal()));
+    Eigen::VectorXd v(static_cast<long>(moved.size()));
+    for (std::size_t j = 0; j < moved.size(); ++j) {
+        v[static_cast<long>(j)] = base[moved[j]];
+    }
+    CurvatureModel trial = m;
+    const double left = project_onto_end(v, A, C, [&](const Eigen::VectorXd& values) {
+        for (std::size_t j = 0; j < moved.size(); ++j) {
+            map.set_one(trial, moved[j], values[static_cast<long>(j)]);
+        }
+        const bool shrunk = std::any_of(trial.lengths.begin(), trial.lengths.end(), [](double l) { return !(l > 0.0); });
+        return shrunk ? Eigen::VectorXd::Constant(c.size(), HUGE_VAL) : gap(trial);
+    });
+    if (!(left < end_tolerance)) {
+        return false;
+    }
+    m = std::move(trial);
+    return true;
 }
 
 } // namespace railodd::geometry::fit
