@@ -50,6 +50,12 @@ public:
     bool is_curvature(std::size_t i) const noexcept { return slots_[i].kind == Kind::curvature; }
     bool is_length(std::size_t i) const noexcept { return slots_[i].kind == Kind::length; }
     std::size_t index(std::size_t i) const noexcept { return slots_[i].index; }
+    // The step a forward difference in parameter i takes: small against
+    // what a curvature (1/m), a heading (rad) or a length or position (m)
+    // moves, large against rounding.
+    double difference_step(std::size_t i) const noexcept {
+        return is_curvature(i) ? 1e-8 : is_start(i) && index(i) == 2 ? 1e-7 : 1e-5;
+    }
 
 private:
     enum class Kind { start, length, curvature };

@@ -67,7 +67,8 @@ double residual_sigma(const DesignPass& pass, const std::vector<double>& weight,
     const double cap = biweight_cut * 1.4826 * median(kept);
     double squares = 0.0;
     for (const double d : kept) {
-        squares += std::min(d, cap) * std::min(d, cap);
+        const double capped = std::min(d, cap);
+        squares += capped * capped;
     }
     const double var = (squares + prior_nodes * prior_m * prior_m) / (dof + prior_nodes);
     return std::clamp(std::sqrt(var), 0.02, 10.0);

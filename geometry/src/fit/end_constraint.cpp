@@ -104,7 +104,7 @@ bool meet_end(CurvatureModel& m, const Pose& target) {
     CurvatureModel nudged = m;
     for (std::size_t j = 0; j < moved.size(); ++j) {
         const std::size_t i = moved[j];
-        const double h = map.is_curvature(i) ? 1e-8 : 1e-5;
+        const double h = map.difference_step(i);
         map.set_one(nudged, i, base[i] + h);
         C.col(static_cast<long>(j)) = (gap(nudged) - c) / h;
         map.set_one(nudged, i, base[i]);

@@ -299,12 +299,6 @@ void perturbed_curve(const CurvatureModel& m2, std::size_t a, std::size_t b, boo
     }
 }
 
-double step_for(const ParameterMap& map, std::size_t i) {
-    if (map.is_curvature(i)) return 1e-8;
-    if (map.is_start(i) && map.index(i) == 2) return 1e-7;
-    return 1e-5;
-}
-
 } // namespace
 
 std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
@@ -391,7 +385,7 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
     // copy per column.
     CurvatureModel m2 = m;
     for (std::size_t i = 0; i < map.size(); ++i) {
-        const double h = step_for(map, i);
+        const double h = map.difference_step(i);
         map.set_one(m2, i, base[i] + h);
         const auto [a, b] = map.influence(i);
         Pose end2;
