@@ -191,7 +191,8 @@ TEST(DesignDp, PrunedSearchMatchesExhaustiveEnumeration) {
 }
 
 // A window's cost from the knot costs before and after it equals the whole
-// structure solved again, for knot moves, merges and splits anywhere.
+// structure solved again, for knot moves, merges and splits anywhere; a
+// window priced against a bound it reaches is not priced below it.
 TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
     const FrameDesign truth = known();
     const std::vector<FrameNode> n = nodes_on(truth, 7.0, 0.3, 11);
@@ -226,7 +227,12 @@ TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
             for (std::size_t i = 0; i < d.elements.size(); ++i) {
                 prior += element_prior(d.elements[i], i == 0, i + 1 == d.elements.size(), o);
             }
-            EXPECT_NEAR(costs.replaced(c.j, c.k, c.w), d.cost + prior, 1e-6 * d.cost) << c.j << " " << c.k << " tied " << tied;
+            const double whole_cost = costs.replaced(c.j, c.k, c.w);
+            EXPECT_NEAR(whole_cost, d.cost + prior, 1e-6 * d.cost) << c.j << " " << c.k << " tied " << tied;
+            // With a bound: the same cost below it, at least the bound above it.
+            EXPECT_EQ(costs.replaced(c.j, c.k, c.w, whole_cost + 1.0), whole_cost);
+            EXPECT_GE(costs.replaced(c.j, c.k, c.w, whole_cost - 1e-9), whole_cost - 1e-9);
+            EXPECT_GE(costs.replaced(c.j, c.k, c.w, 0.5 * whole_cost), 0.5 * whole_cost);
         }
         // An arc straight after a line is no railway design.
         EXPECT_TRUE(std::isinf(costs.replaced(1, 2, {{ElementKind::arc, 200, 260, 0, 0}})));

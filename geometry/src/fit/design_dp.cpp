@@ -222,13 +222,18 @@ bool near_copy(const Hypothesis& h, const Hypothesis& by) {
     const design::Vec4& a = h.arg;
     double d[4] = {a(0) + u * (a(1) + u * (0.5 * a(2) + u * a(3) / 6.0)), a(1) + u * (a(2) + 0.5 * u * a(3)),
                    a(2) + u * a(3), a(3)};
-    double cost = by.value;
+    // On by's variables only: the other terms are exact zeros.
+    int v[4], m = 0;
     for (int i = 0; i < 4; ++i) {
-        d[i] = (by.f.free & (1u << i)) ? d[i] - by.arg(i) : 0.0;
+        if (by.f.free & (1u << i)) {
+            d[i] -= by.arg(i);
+            v[m++] = i;
+        }
     }
-    for (int i = 0; i < 4; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            cost += d[i] * by.f.P(i, j) * d[j];
+    double cost = by.value;
+    for (int a = 0; a < m; ++a) {
+        for (int b = 0; b < m; ++b) {
+            cost += d[v[a]] * by.f.P(v[a], v[b]) * d[v[b]];
         }
     }
     return cost <= h.value;

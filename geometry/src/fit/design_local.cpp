@@ -139,7 +139,8 @@ bool StructureCosts::open_at(std::size_t j, ElementKind kind, Quad& f) const {
     return design::open_element(f, kind, st_[j - 1].kind == ElementKind::transition && kind == ElementKind::transition);
 }
 
-double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update) const {
+double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update,
+                              double bound) const {
     if (w.empty() || !allowed(j, k, w)) {
         return infinite;
     }
@@ -160,7 +161,7 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
         return infinite;
     }
     const double u = (w.back().s1 - w.back().s0) / S;
-    Vec4 x;
+    Vec4 x, y;
     double cost = 0.0;
     if (k == m) {
         cost = design::close_chain(f, u, w.back().kind, o_, &x);
@@ -176,8 +177,14 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
             return infinite;
         }
         design::add_quad(g, backward_[k]);
-        Vec4 y;
         cost = design::minimum(g, &y);
+    }
+    // The new elements' priors only add.
+    const double floor = cost + outside_prior(j, k);
+    if (floor >= bound) {
+        return floor;
+    }
+    if (k < m) {
         y(3) = 0.0;
         x = design::start_from_knot(maps.back(), y);
     }
@@ -225,15 +232,20 @@ void StructureCosts::valid_up_to(std::size_t j) {
     }
 }
 
+double StructureCosts::outside_prior(std::size_t j, std::size_t k) const {
+    double prior = prior_total_;
+    for (std::size_t i = j; i < k; ++i) {
+        prior -= prior_[i];
+    }
+    return prior;
+}
+
 // The priors with the window's elements as solved here (backtracked from the
 // last one's start state x) in place of the old ones; those outside keep
 // their last full solve's values.
 double StructureCosts::window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
                                     const std::vector<design::KnotMap>& maps, Vec4 x, std::vector<double>* priors) const {
-    double prior = prior_total_;
-    for (std::size_t i = j; i < k; ++i) {
-        prior -= prior_[i];
-    }
+    double prior = outside_prior(j, k);
     const std::size_t m = st_.size();
     if (priors) {
         priors->assign(w.size(), 0.0);

@@ -86,7 +86,7 @@ private:
     }
 
     void offer(std::size_t j, std::size_t k, std::vector<FrameElement> w, Move& best) const {
-        const double c = costs_.replaced(j, k, w);
+        const double c = costs_.replaced(j, k, w, best.cost);
         if (c < best.cost) {
             best = {j, k, std::move(w), c};
         }
