@@ -50,11 +50,8 @@ double noise_reach(std::size_t n, const FitQuality& q) {
     return lo * sigma;
 }
 
-// The design search lets a branch's curvature jump at its switch, as a
-// turnout's curve starts (design_rules.hpp).
-bool misses(const EndMiss& m, const FitOptions& o) {
-    const bool curvature = o.method != FitMethod::design_search && m.curvature > max_curvature;
-    return m.gap_m > max_gap_m || m.heading_rad > max_heading_rad || curvature;
+bool misses(const EndMiss& m) {
+    return m.gap_m > max_gap_m || m.heading_rad > max_heading_rad || m.curvature > max_curvature;
 }
 
 // The fit with free ends, each tied end's stretch rebuilt by corners.
@@ -96,7 +93,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
         // close and the ties exact.
         return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0, best.noise_sigma_m, 0};
     }
-    if (best.method == ChainMethod::railway && end && misses(end_miss(best.alignment, *end), o)) {
+    if (best.method == ChainMethod::railway && end && misses(end_miss(best.alignment, *end))) {
         // The fit holds its end pose as a constraint, but a window whose
         // every model failed to meet it (least-squares fallback) may still
         // miss: then the last stretch is rebuilt from the fit's pose there

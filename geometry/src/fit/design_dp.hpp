@@ -62,10 +62,6 @@ struct DesignDpOptions {
     // (OSM-like truth seed 1041 at 2 m: its window cost 183 more spliced, and
     // a reverse curve's 333 m straight stayed missing, 7.9 m off).
     std::optional<ElementKind> before, after;
-    // The ties are switches: the curvature may jump there, as a turnout's
-    // curve starts (design_rules.hpp); otherwise (a window inside a chain)
-    // it is tied as firmly as position and heading.
-    bool turnout_ties = false;
     bool refine = true; // the local search after the beam (refine_structure)
     std::vector<double> knots; // candidate knots besides the grid's (where no node came, too)
 };

@@ -153,11 +153,9 @@ std::vector<double> knots_around(const std::vector<FrameElement>& st) {
     return k;
 }
 
-// A chain's tied ends, and whether its curvature may jump there as a
-// turnout's curve starts (design_rules.hpp).
+// A chain's tied ends: position, heading and curvature (design_rules.hpp).
 struct Ties {
     std::optional<Pose> start, end;
-    bool turnout = true;
 };
 
 // What a pass searches: the whole structure (with the previous pass's
@@ -192,7 +190,6 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
         o.end = frame_state(ref, *end, o.s1);
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
-    o.turnout_ties = ties.turnout;
     const std::vector<FrameElement> seed = carried(previous, o);
     DesignPass pass;
     if (search == Search::whole || seed.empty()) {
@@ -214,8 +211,8 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
 
 // The design as clothoids whose knots keep its structure (lines at zero
 // curvature, an arc's two knots one variable, a transition meeting a line or
-// another transition at zero), every length free: what the exact polish
-// moves.
+// another transition at zero, a tied end at its tie's curvature), every
+// length free: what the exact polish moves.
 CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>& start, const std::optional<Pose>& end) {
     const std::vector<FrameElement> el = on_map(*pass.frame, pass.design);
     CurvatureModel m;
@@ -224,7 +221,7 @@ CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>
     const auto is = [&](std::size_t j, ElementKind k) { return j < el.size() && el[j].kind == k; };
     if (is(0, ElementKind::line) || start) {
         m.knot_var.push_back(-1);
-        m.knot_fixed.push_back(is(0, ElementKind::line) ? 0.0 : el[0].k0);
+        m.knot_fixed.push_back(start ? start->curvature : 0.0);
     } else {
         m.curv.push_back(el[0].k0);
         m.knot_var.push_back(0);
@@ -233,11 +230,11 @@ CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>
     for (std::size_t j = 0; j < el.size(); ++j) {
         const double len = std::max(el[j].s1 - el[j].s0, 0.5);
         const bool last = j + 1 == el.size();
-        if (el[j].kind == ElementKind::line || is(j + 1, ElementKind::line) ||
-            (el[j].kind == ElementKind::transition && is(j + 1, ElementKind::transition))) {
+        if (last && end) {
+            m.push_segment(len, true, -1, end->curvature);
+        } else if (el[j].kind == ElementKind::line || is(j + 1, ElementKind::line) ||
+                   (el[j].kind == ElementKind::transition && is(j + 1, ElementKind::transition))) {
             m.push_segment(len, true, -1, 0.0);
-        } else if (last && end) {
-            m.push_segment(len, true, -1, el[j].k1);
         } else if (el[j].kind == ElementKind::arc && m.knot_var.back() >= 0) {
             m.push_segment(len, true, m.knot_var.back());
         } else {
@@ -467,18 +464,6 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     return r;
 }
 
-// The largest curvature jump at a tied end.
-double tie_jump(const Alignment& a, const std::optional<Pose>& start, const std::optional<Pose>& end) {
-    double j = 0.0;
-    if (start && !a.primitives.empty()) {
-        j = std::abs(a.primitives.front().curv_start - start->curvature);
-    }
-    if (end && !a.primitives.empty()) {
-        j = std::max(j, std::abs(a.primitives.back().curv_end - end->curvature));
-    }
-    return j;
-}
-
 } // namespace
 
 FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o, const std::vector<FrameElement>& seed) {
@@ -520,16 +505,7 @@ DesignDpOptions calibrated_options(std::size_t n) {
 
 FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose>& start, const std::optional<Pose>& end,
                      const FitOptions& options) {
-    // A jump tighter than a turnout's 1/100 m is no turnout: a short chain
-    // between two switches hooking to its few nodes (Cologne: 36 links with
-    // jumps over 1/50 m, chains of three nodes and 12-18 m). It is fitted
-    // again with its curvature tied.
-    constexpr double max_turnout_curvature = 0.01;
-    FitResult r = fit_with(mapped, {start, end, true}, options);
-    if (tie_jump(r.alignment, start, end) > max_turnout_curvature) {
-        r = fit_with(mapped, {start, end, false}, options);
-    }
-    return r;
+    return fit_with(mapped, {start, end}, options);
 }
 
 } // namespace railodd::geometry::fit

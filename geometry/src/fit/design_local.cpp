@@ -41,8 +41,15 @@ double element_prior(const FrameElement& e, bool first, bool last, const DesignD
     if (e.kind != ElementKind::transition) {
         return 0.0;
     }
+    // At a switch (a chain's tie, not a span's inside it) the branch starts
+    // with its through track's curvature, whichever way its own curve
+    // turns: a sign change there hides no knot (a Cologne branch off an
+    // R 125 m curve, turning the other way, left its middle node out 5 m
+    // off rather than pay it).
+    const bool tied = (first && o.start) || (last && o.end);
+    const bool at_switch = (first && o.start && !o.before) || (last && o.end && !o.after);
     double c = 0.0;
-    if (e.k0 * e.k1 < 0.0 && std::min(std::abs(e.k0), std::abs(e.k1)) > 1e-5) {
+    if (!at_switch && e.k0 * e.k1 < 0.0 && std::min(std::abs(e.k0), std::abs(e.k1)) > 1e-5) {
         c += o.parameter_penalty;
     }
     const double dk = std::abs(e.k1 - e.k0);
@@ -56,7 +63,6 @@ double element_prior(const FrameElement& e, bool first, bool last, const DesignD
         // 0.1 m, 15 -> 6 beyond the limit). At a switch none pays: the rule
         // is short for a fast line's transitions (VDE 8.2 with it: 16.2
         // elements per km against 9.6).
-        const bool tied = (first && o.start) || (last && o.end);
         const bool inside = !first && !last;
         c += inside || (!tied && r > 0.0) ? o.transition_prior * r * r : 0.0;
     }

@@ -190,14 +190,13 @@ void add_curvature(Quad& f, double a, double b, double weight) {
     }
 }
 
-void add_tie(Quad& f, const Vec4& target, double w, double w_curvature) {
+void add_tie(Quad& f, const Vec4& target, double w) {
     for (int i = 0; i < 3; ++i) {
-        const double wi = i == 2 ? w_curvature : w;
         if (f.free & (1u << i)) {
-            f.P(i, i) += wi;
-            f.q(i) += wi * target(i);
+            f.P(i, i) += w;
+            f.q(i) += w * target(i);
         }
-        f.c += wi * target(i) * target(i);
+        f.c += w * target(i) * target(i);
     }
 }
 

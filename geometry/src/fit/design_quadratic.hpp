@@ -51,9 +51,9 @@ inline Vec4 node_row(double u) { return {1.0, u, 0.5 * u * u, u * u * u / 6.0}; 
 // Adds weight * integral of k^2 ds over the element's scaled stretch [a, b].
 void add_curvature(Quad& f, double a, double b, double weight);
 
-// Adds w (x_i - target_i)^2 for i < 2 and w_curvature (x_2 - target_2)^2:
-// a tie (a non-variable coordinate adds its constant mismatch).
-void add_tie(Quad& f, const Vec4& target, double w, double w_curvature);
+// Adds w (x_i - target_i)^2 for i < 3 (position, heading, curvature): a
+// tie (a non-variable coordinate adds its constant mismatch).
+void add_tie(Quad& f, const Vec4& target, double w);
 
 // Minimum of f over its variables; the minimiser in *arg (zeros elsewhere).
 double minimum(const Quad& f, Vec4* arg = nullptr);

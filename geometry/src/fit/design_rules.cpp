@@ -36,7 +36,7 @@ Quad first_element(ElementKind kind, const DesignDpOptions& o) {
         fix_zero(f, 2);
     }
     if (o.start) {
-        add_tie(f, scaled(*o.start), tie_weight, o.turnout_ties ? turnout_weight : tie_weight);
+        add_tie(f, scaled(*o.start), tie_weight);
     } else {
         add_free_end(f, 0.0);
     }
@@ -93,7 +93,7 @@ double close_chain(Quad f, double u, ElementKind kind, const DesignDpOptions& o,
     if (o.after == ElementKind::transition && kind == ElementKind::transition) {
         fix_zero(g, 2);
     }
-    add_tie(g, scaled(*o.end), tie_weight, o.turnout_ties ? turnout_weight : tie_weight);
+    add_tie(g, scaled(*o.end), tie_weight);
     Vec4 y;
     const double refund = o.after && continues(*o.after, kind) ? element_penalty(kind, o, false) : 0.0;
     const double cost = minimum(g, &y) - refund;

@@ -15,16 +15,13 @@ namespace railodd::geometry::fit::design {
 
 constexpr ElementKind kinds[3] = {ElementKind::line, ElementKind::transition, ElementKind::arc};
 
-// A tie holds the scaled position and heading to about a tenth of a
-// millimetre (a larger weight's constants swamp the nodes' cost in the
-// windows' sums, design_local.hpp).
+// A tie holds the scaled position, heading and curvature to about a tenth
+// of a millimetre (a larger weight's constants swamp the nodes' cost in the
+// windows' sums, design_local.hpp). A branch starts with its through
+// track's curvature at the switch: a turnout's curve that starts there
+// without a transition is drawn with a short one (10 m into R 300 m lies
+// 14 mm inside the curve), and every link stays G2.
 constexpr double tie_weight = 1e6;
-
-// A tie holds the curvature as weakly as a free end holds it to zero (sd
-// 1/500 m): a turnout's curve starts at the switch without a transition, so
-// a branch may jump from its through track's curvature (a jump to 1/300 m
-// costs 2.8, about a third of an element). Per scaled curvature squared.
-constexpr double turnout_weight = (500.0 / (S * S)) * (500.0 / (S * S));
 
 Vec4 scaled(const FrameState& s);
 

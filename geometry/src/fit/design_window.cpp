@@ -47,7 +47,6 @@ std::size_t window_end(const std::vector<FrameElement>& el, std::size_t j) {
 FrameDesign research_span(const std::vector<FrameNode>& nodes, const FrameDesign& design, const DesignDpOptions& o,
                           double lo, double hi) {
     DesignDpOptions w = o;
-    w.turnout_ties = false; // the span's ties are the design's own, inside the chain
     w.knots.clear();        // the grid's, where nodes came
     w.spawn = window_spawn;
     for (const FrameElement& e : design.elements) {
