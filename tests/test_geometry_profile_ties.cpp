@@ -117,7 +117,8 @@ TEST(ProfileTies, DisagreeingTracksMeetInHeightAndGrade) {
     // The data still rule away from the vertex.
     double lo = 1e300, hi = -1e300;
     for (std::size_t i = 0; i < e.profiles.size(); ++i) {
-        for (double s = 0.0; s <= e.lengths[i]; s += e.lengths[i] / 100.0) {
+        for (int k = 0; k <= 100; ++k) { // both ends exactly: a sum of steps can stop short of the last
+            const double s = e.lengths[i] * k / 100.0;
             lo = std::min(lo, elevation_at(e.profiles[i].polys, s));
             hi = std::max(hi, elevation_at(e.profiles[i].polys, s));
         }

@@ -43,9 +43,7 @@ double element_prior(const FrameElement& e, bool first, bool last, const DesignD
     }
     // At a switch (a chain's tie, not a span's inside it) the branch starts
     // with its through track's curvature, whichever way its own curve
-    // turns: a sign change there hides no knot (a Cologne branch off an
-    // R 125 m curve, turning the other way, left its middle node out 5 m
-    // off rather than pay it).
+    // turns: a sign change in its first transition hides no knot.
     const bool tied = (first && o.start) || (last && o.end);
     const bool at_switch = (first && o.start && !o.before) || (last && o.end && !o.after);
     double c = 0.0;
