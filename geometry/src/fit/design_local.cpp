@@ -184,15 +184,15 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
         cost = design::minimum(g, &y);
     }
     // The new elements' priors only add.
-    const double floor = cost + outside_prior(j, k);
-    if (floor >= bound) {
-        return floor;
+    const double outside = outside_prior(j, k);
+    if (cost + outside >= bound) {
+        return cost + outside;
     }
     if (k < m) {
         y(3) = 0.0;
         x = design::start_from_knot(maps.back(), y);
     }
-    return cost + window_prior(j, k, w, maps, x, update ? &update->priors : nullptr);
+    return cost + window_prior(j, k, w, maps, x, outside, update ? &update->priors : nullptr);
 }
 
 void StructureCosts::replace(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) {
@@ -245,11 +245,12 @@ double StructureCosts::outside_prior(std::size_t j, std::size_t k) const {
 }
 
 // The priors with the window's elements as solved here (backtracked from the
-// last one's start state x) in place of the old ones; those outside keep
-// their last full solve's values.
+// last one's start state x) added to those outside it (`outside`, their
+// last full solve's values).
 double StructureCosts::window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
-                                    const std::vector<design::KnotMap>& maps, Vec4 x, std::vector<double>* priors) const {
-    double prior = outside_prior(j, k);
+                                    const std::vector<design::KnotMap>& maps, Vec4 x, double outside,
+                                    std::vector<double>* priors) const {
+    double prior = outside;
     const std::size_t m = st_.size();
     if (priors) {
         priors->assign(w.size(), 0.0);

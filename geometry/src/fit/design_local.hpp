@@ -95,7 +95,8 @@ private:
                   double bound = std::numeric_limits<double>::infinity()) const;
     bool allowed(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const;
     double window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
-                        const std::vector<design::KnotMap>& maps, design::Vec4 x, std::vector<double>* priors) const;
+                        const std::vector<design::KnotMap>& maps, design::Vec4 x, double outside,
+                        std::vector<double>* priors) const;
     // The priors of the elements outside [j, k), as of the last full solve.
     double outside_prior(std::size_t j, std::size_t k) const;
     std::size_t nodes_after(double s) const;

@@ -61,17 +61,36 @@ void upper_inverse(const double (&M)[4][4], double (&X)[4][4]) {
     }
 }
 
-// The cost in the knot's state from the cost in d start variables, whose
-// map onto the knot's first d coordinates is the upper triangular M:
-// X' P X and X' q for X = M^-1, on the d x d block only (the padded 4 x 4
-// Eigen products were a tenth of the fit). The sums run in the order those
-// products took (terms two apart paired first where Eigen read X' by rows
-// as packets, in turn elsewhere): designs are unchanged to the bit, checked
-// on 200,000 random costs.
+// X = M^-1 for the map M of an element's d start variables (cols) onto the
+// first d coordinates of its state at scaled length u: the flow's rows and
+// those columns, upper triangular (a line ends at zero curvature, so its
+// knot has two coordinates; an arc or a transition leaving a line three).
+// Returns d.
+int knot_map_inverse(double u, unsigned free, int* cols, double (&X)[4][4]) {
+    const int d = variables(free, cols);
+    const Mat4 F = flow(u);
+    double M[4][4] = {};
+    for (int i = 0; i < d; ++i) {
+        for (int j = 0; j < d; ++j) {
+            M[i][j] = F(i, cols[j]);
+        }
+    }
+    if (d == 2) {
+        upper_inverse<2>(M, X);
+    } else {
+        upper_inverse<3>(M, X);
+    }
+    return d;
+}
+
+// The cost in the knot's state from the cost in d start variables: X' P X
+// and X' q for X = knot_map_inverse, on the d x d block only (the padded
+// 4 x 4 Eigen products were a tenth of the fit). The sums run in the order
+// those products took (terms two apart paired first where Eigen read X' by
+// rows as packets, in turn elsewhere): designs are unchanged to the bit,
+// checked on 200,000 random costs.
 template <int D>
-void to_knot_triangular(const double (&M)[4][4], const Quad& f, const int* cols, Quad& g) {
-    double X[4][4] = {};
-    upper_inverse<D>(M, X);
+void to_knot_triangular(const double (&X)[4][4], const Quad& f, const int* cols, Quad& g) {
     double A[4][4]; // X' P
     for (int i = 0; i < D; ++i) {
         for (int j = 0; j < D; ++j) {
@@ -220,7 +239,6 @@ double minimum(const Quad& f, Vec4* arg) {
 }
 
 Quad to_knot(const Quad& f, double u, KnotMap* map) {
-    const Mat4 F = flow(u);
     Quad g;
     if (map) {
         map->free = f.free;
@@ -243,21 +261,14 @@ Quad to_knot(const Quad& f, double u, KnotMap* map) {
         }
         return g;
     }
-    // d variables map one to one onto the first d knot coordinates (a line
-    // ends at zero curvature, so its knot has two) by an upper triangular
-    // map, padded to 4 x 4 with the identity.
+    // d variables map one to one onto the first d knot coordinates.
     int cols[4];
-    const int d = variables(f.free, cols);
-    double M[4][4] = {};
-    for (int i = 0; i < d; ++i) {
-        for (int j = 0; j < d; ++j) {
-            M[i][j] = F(i, cols[j]);
-        }
-    }
+    double X[4][4] = {};
+    const int d = knot_map_inverse(u, f.free, cols, X);
     if (d == 2) {
-        to_knot_triangular<2>(M, f, cols, g);
+        to_knot_triangular<2>(X, f, cols, g);
     } else {
-        to_knot_triangular<3>(M, f, cols, g);
+        to_knot_triangular<3>(X, f, cols, g);
     }
     g.c = f.c;
     g.free = d == 2 ? 3u : 7u;
@@ -271,19 +282,8 @@ Vec4 start_from_knot(const KnotMap& map, const Vec4& y) {
         return flow(-map.length) * end;
     }
     int cols[4];
-    const int d = variables(map.free, cols);
-    const Mat4 F = flow(map.length);
-    double M[4][4] = {}, X[4][4] = {};
-    for (int i = 0; i < d; ++i) {
-        for (int j = 0; j < d; ++j) {
-            M[i][j] = F(i, cols[j]);
-        }
-    }
-    if (d == 2) {
-        upper_inverse<2>(M, X);
-    } else {
-        upper_inverse<3>(M, X);
-    }
+    double X[4][4] = {};
+    const int d = knot_map_inverse(map.length, map.free, cols, X);
     Vec4 x = Vec4::Zero();
     for (int i = 0; i < d; ++i) {
         double v = X[i][0] * y(0);
