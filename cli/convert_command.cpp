@@ -40,8 +40,14 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
                     "Scatter (m) of mapped track nodes about the true centreline, the fit's model selection scale; "
                     "default: estimated per chain from its nodes")
         ->check(finite_range(0.01, 5.0));
+    app->add_option("--fit-method", opt_.fit_method,
+                    "How a track's design is read from its nodes: design (one search per chain) or windowed (the "
+                    "older windowed fit, kept until the design search wins every benchmark row; docs/geometry.md)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"design", "windowed"}));
     app->add_flag("--independent-tracks", opt_.independent_tracks,
-                  "Fit every track on its own nodes only: no parallel track's design offered (docs/geometry.md)");
+                  "Windowed fit: every track on its own nodes only, no parallel track's design offered (the design "
+                  "search fits every track so; docs/geometry.md)");
     app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
         ->capture_default_str()
         ->check(finite_range(0.0, 10000.0));
@@ -302,6 +308,7 @@ int ConvertCommand::run() {
     fo.noise_sigma_m = opt_.node_noise_m;
     fo.threads = opt_.threads;
     fo.parallel_guides = !opt_.independent_tracks;
+    fo.method = opt_.fit_method == "windowed" ? geometry::FitMethod::windowed : geometry::FitMethod::design_search;
     Geometry geo = fit_geometry(result, opt_.dem, fo, timer);
     timer.start("cant");
     geometry::CantOptions cant;

@@ -101,6 +101,32 @@ TEST(CliConvert, BadOptionsAreUsageErrors) {
     const auto r4 = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / "o4") + " --relation 5");
     EXPECT_EQ(r4.exit_code, 2);
     EXPECT_NE(r4.output.find("relation 5 is not in the file"), std::string::npos) << r4.output;
+    const auto r5 = run_railodd("convert " + quoted(in) + " -o " + quoted(dir / "o5") + " --fit-method spline");
+    EXPECT_EQ(r5.exit_code, 1);
+    EXPECT_NE(r5.output.find("--fit-method"), std::string::npos) << r5.output;
+    EXPECT_FALSE(fs::exists(dir / "o5"));
+}
+
+// The design search by default; --fit-method windowed gives the older fit
+// (the sample's noise estimate: the windowed fit's 0.1 m floor, a real one
+// from the design search's residuals).
+TEST(CliConvert, FitMethodChoosesTheFit) {
+    const auto dir = scratch_dir();
+    ASSERT_EQ(run_railodd("sample -o " + quoted(dir / "sample")).exit_code, 0);
+    const auto osm = dir / "sample" / "sample_route.osm";
+    double sigma[2] = {};
+    int i = 0;
+    for (const char* method : {"", " --fit-method windowed"}) {
+        const auto out = dir / std::to_string(i);
+        const auto r = run_railodd("convert " + quoted(osm) + " -o " + quoted(out) + " --no-report --no-timings" + method);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        const auto report = nlohmann::json::parse(read_file(out / "report.json"));
+        EXPECT_LT(report["geometry"]["summary"]["links"]["max_gap_m"].get<double>(), 1e-3) << method;
+        sigma[i++] = report["geometry"]["summary"]["node_noise"]["chain_sigma_p50_m"].get<double>();
+    }
+    EXPECT_NE(read_file(dir / "0" / "map.xodr"), read_file(dir / "1" / "map.xodr"));
+    EXPECT_GT(sigma[0], 0.15);
+    EXPECT_EQ(sigma[1], 0.1);
 }
 
 TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {

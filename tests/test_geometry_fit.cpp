@@ -91,6 +91,16 @@ double radius_at(const Alignment& fitted, double x, double y) {
     return 1.0 / std::abs(f.evaluate(f.project(x, y).s).curvature);
 }
 
+// The windowed fit (FitMethod::windowed), which these cases were first
+// written for and whose element structure they pin; the design search, the
+// default, is held to issue 37's radius and deviation targets on them
+// (FitSimpleCurve.DefaultFitKeepsRadiusAndPosition).
+FitOptions windowed() {
+    FitOptions o;
+    o.method = FitMethod::windowed;
+    return o;
+}
+
 void expect_g2(const Alignment& a) {
     for (std::size_t i = 1; i < a.primitives.size(); ++i) {
         EXPECT_DOUBLE_EQ(a.primitives[i - 1].curv_end, a.primitives[i].curv_start) << "joint " << i;
@@ -125,7 +135,7 @@ TEST_P(FitSimpleCurve, RecoversRadiusPositionAndStructure) {
     const double transition = std::clamp(r / 8, 60.0, 200.0);
     const double arc = std::clamp(r / 2, 300.0, 1200.0);
     const Alignment truth = curve(r, transition, arc, r > 1000 ? -1 : 1);
-    const FitResult fit = fit_alignment(draw(truth, 0.3, GetParam().seed), std::nullopt, std::nullopt, {});
+    const FitResult fit = fit_alignment(draw(truth, 0.3, GetParam().seed), std::nullopt, std::nullopt, windowed());
     expect_g2(fit.alignment);
     const Pose mid = IndexedAlignment(truth).evaluate(600 + transition + arc / 2);
     EXPECT_NEAR(radius_at(fit.alignment, mid.x, mid.y), r, 0.02 * r);
@@ -141,6 +151,25 @@ TEST_P(FitSimpleCurve, RecoversRadiusPositionAndStructure) {
     EXPECT_EQ(fit.alignment.primitives[3].kind, PrimitiveKind::spiral);
     EXPECT_EQ(fit.alignment.primitives[4].kind, PrimitiveKind::line);
     EXPECT_EQ(fit.quality.fallback_windows, 0u);
+}
+
+// The design search on the same curves: the radius and, away from the
+// free ends, within 1 m of the design (issue 37's limit at 0.3 m of noise).
+// Its structure is not pinned: on 4 of the 18 it takes another (a free
+// end's straight as an arc of R 44-110 km, R 600's arc split in two arcs
+// 5 % apart), 3 of them because its local search stops short of a design
+// it prices lower (docs/BENCHMARKS.md).
+TEST_P(FitSimpleCurve, DefaultFitKeepsRadiusAndPosition) {
+    const double r = GetParam().radius;
+    const double transition = std::clamp(r / 8, 60.0, 200.0);
+    const double arc = std::clamp(r / 2, 300.0, 1200.0);
+    const Alignment truth = curve(r, transition, arc, r > 1000 ? -1 : 1);
+    const FitResult fit = fit_alignment(draw(truth, 0.3, GetParam().seed), std::nullopt, std::nullopt, {});
+    expect_g2(fit.alignment);
+    const Pose mid = IndexedAlignment(truth).evaluate(600 + transition + arc / 2);
+    EXPECT_NEAR(radius_at(fit.alignment, mid.x, mid.y), r, 0.02 * r);
+    EXPECT_LT(interior_deviation(fit.alignment, truth, 100.0), 1.0);
+    EXPECT_LE(fit.alignment.primitives.size(), 7u); // the design's 5 and one arc split in two
 }
 
 std::vector<CurveCase> curve_cases() {
@@ -217,7 +246,8 @@ TEST(FitAlignment, MeetsGivenStartAndEndPosesExactly) {
 TEST(FitAlignment, ReachesAnEndPoseOffTheMappedLineExactly) {
     // A track whose tied end (a switch on another track) is 0.5 m to the
     // side of where its nodes lead and turned by 3 mrad, after 4 km: the
-    // last window must bend to it and still follow the nodes.
+    // fit (the windowed one's last window) must bend to it and still follow
+    // the nodes.
     Alignment truth;
     truth.start = {0, 0, 0.3, 0};
     truth.primitives = {make_line(800), make_spiral(80, 0, 1.0 / 900), make_arc(500, 1.0 / 900),
@@ -227,17 +257,21 @@ TEST(FitAlignment, ReachesAnEndPoseOffTheMappedLineExactly) {
     end.x += 0.5 * -std::sin(end.hdg);
     end.y += 0.5 * std::cos(end.hdg);
     end.hdg += 0.003;
-    const FitResult fit = fit_alignment(draw(truth, 0.3, 11), t.evaluate(0), end, {});
-    EXPECT_GE(fit.quality.windows, 2u);
-    expect_g2(fit.alignment);
-    const IndexedAlignment f(fit.alignment);
-    const Pose b = f.evaluate(f.length());
-    EXPECT_NEAR(b.x, end.x, 1e-7);
-    EXPECT_NEAR(b.y, end.y, 1e-7);
-    EXPECT_NEAR(b.hdg, end.hdg, 1e-9);
-    EXPECT_NEAR(b.curvature, end.curvature, 1e-12);
-    EXPECT_LT(fit.quality.max_m, 1.0);
-    EXPECT_LT(interior_deviation(fit.alignment, truth, 400.0), 0.5);
+    for (const FitOptions& o : {FitOptions{}, windowed()}) {
+        const FitResult fit = fit_alignment(draw(truth, 0.3, 11), t.evaluate(0), end, o);
+        if (o.method == FitMethod::windowed) {
+            EXPECT_GE(fit.quality.windows, 2u);
+        }
+        expect_g2(fit.alignment);
+        const IndexedAlignment f(fit.alignment);
+        const Pose b = f.evaluate(f.length());
+        EXPECT_NEAR(b.x, end.x, 1e-7);
+        EXPECT_NEAR(b.y, end.y, 1e-7);
+        EXPECT_NEAR(b.hdg, end.hdg, 1e-9);
+        EXPECT_NEAR(b.curvature, end.curvature, 1e-12);
+        EXPECT_LT(fit.quality.max_m, 1.0);
+        EXPECT_LT(interior_deviation(fit.alignment, truth, 400.0), 0.5);
+    }
 }
 
 TEST(FitAlignment, LongTrackIsFittedInWindowsWithoutJoints) {
@@ -251,7 +285,7 @@ TEST(FitAlignment, LongTrackIsFittedInWindowsWithoutJoints) {
         truth.primitives.push_back(make_spiral(90, k, 0));
     }
     truth.primitives.push_back(make_line(900));
-    const FitResult fit = fit_alignment(draw(truth, 0.3, 7), std::nullopt, std::nullopt, {});
+    const FitResult fit = fit_alignment(draw(truth, 0.3, 7), std::nullopt, std::nullopt, windowed());
     EXPECT_GE(fit.quality.windows, 2u);
     expect_g2(fit.alignment);
     EXPECT_LT(interior_deviation(fit.alignment, truth, 150.0), 0.5);

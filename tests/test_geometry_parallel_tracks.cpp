@@ -82,6 +82,7 @@ TEST(ParallelTracks, ASecondTrackFittedWithTheFirstAsGuideSharesItsCurvature) {
         // The scatter given: a sparse chain's own estimate falls back to 0.1 m.
         FitOptions fo;
         fo.noise_sigma_m = o.sigma_m;
+        fo.method = FitMethod::windowed; // the only method that takes guides (issue 37 item 7)
         const FitResult first = fit_alignment(r.nodes, std::nullopt, std::nullopt, fo);
         const std::vector<Point> second_nodes = beside(r, o.sigma_m, static_cast<std::uint32_t>(seed));
         const FitResult own = fit_alignment(second_nodes, std::nullopt, std::nullopt, fo);

@@ -15,7 +15,9 @@ namespace {
 
 struct Figures {
     double p95 = 0.0, max = 0.0;
-    std::size_t edges = 0, covered = 0, corner = 0;
+    double p95_sigmas = 0.0;  // node distances in units of their chain's noise estimate
+    std::size_t beyond = 0;   // nodes further than max(1 m, 4 sigma-hat)
+    std::size_t edges = 0, covered = 0, corner = 0, outliers = 0;
 };
 
 Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
@@ -24,7 +26,7 @@ Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
     net = fit_track_graph(g, {}); // the node scatter estimated per chain, as railodd convert does
 
     Figures f;
-    std::vector<double> d;
+    std::vector<double> d, ds;
     for (const auto& e : net.edges) {
         std::vector<Point> pts;
         for (const auto& n : g.edges[e.edge].nodes) {
@@ -32,19 +34,29 @@ Figures fit_extract(const test::fs::path& file, FittedNetwork& net) {
         }
         const auto de = distances(e.alignment, pts);
         d.insert(d.end(), de.begin(), de.end());
+        const double sigma = e.quality.noise_sigma_m; // 0 for a degenerate chain
+        for (const double x : de) {
+            if (sigma > 0.0) {
+                ds.push_back(x / sigma);
+            }
+            f.beyond += x > std::max(1.0, 4.0 * sigma) ? 1 : 0;
+        }
         f.covered += e.alignment.primitives.empty() ? 0 : 1;
     }
     f.edges = g.edges.size();
     f.corner = net.corner_chains.size();
     std::sort(d.begin(), d.end());
+    std::sort(ds.begin(), ds.end());
     f.p95 = d[d.size() * 95 / 100];
+    f.p95_sigmas = ds[ds.size() * 95 / 100];
     f.max = d.back();
+    f.outliers = net.outlier_nodes;
     return f;
 }
 
 } // namespace
 
-TEST(GeometrySharedExtracts, NodesLieWithinTwoThirdsOfAMetreAtP95AndTwoMetresAtMost) {
+TEST(GeometrySharedExtracts, NodesLieWithinTheirNoiseAndOnlyStraysFarOff) {
     RAILODD_REQUIRE_SHARED_DATA();
     for (const char* name : {"gh_harsdorf.osm.pbf", "valhalla_liechtenstein-latest.osm.pbf",
                              "gh_north-bayreuth.osm.gz", "gh_lauf-200115.osm.pbf", "osrm_monaco.osm.pbf",
@@ -52,14 +64,15 @@ TEST(GeometrySharedExtracts, NodesLieWithinTwoThirdsOfAMetreAtP95AndTwoMetresAtM
         SCOPED_TRACE(name);
         FittedNetwork net;
         const Figures f = fit_extract(test::shared_data() / "osm" / name, net);
-        std::cout << name << ": p95 " << f.p95 << " m, max " << f.max << " m, " << f.edges << " edges, "
-                  << f.corner << " corner chains\n";
+        std::cout << name << ": p95 " << f.p95 << " m (" << f.p95_sigmas << " sigma-hat), max " << f.max << " m, "
+                  << f.beyond << " nodes beyond max(1 m, 4 sigma-hat), " << f.outliers << " left out, " << f.edges
+                  << " edges, " << f.corner << " corner chains\n";
         EXPECT_EQ(f.covered, f.edges) << "every mapped track has a centreline";
-        // The fit reads a design, not every node: 0.6 m at p95 where the nodes
-        // are too sparse to estimate their scatter (Krems' tight curves:
-        // 0.59 m), never more than 2 m.
-        EXPECT_LE(f.p95, 0.65);
-        EXPECT_LE(f.max, 2.0);
+        // The fit reads a design, not every node: the nodes lie about it as
+        // their scatter does (issue 37: p95 within 2.5 sigma-hat), and a node
+        // far off is one the fit left out as a stray.
+        EXPECT_LE(f.p95_sigmas, 2.5);
+        EXPECT_LE(f.beyond, f.outliers);
         for (const auto& l : net.branch_links) {
             EXPECT_LT(l.gap_m, 1e-3);
             EXPECT_LT(l.heading_rad, 1e-4);

@@ -46,6 +46,13 @@ TEST_P(XodrSharedMaps, ValidatesImportsAndCarriesTheMappedFeatures) {
     EXPECT_EQ(v["summary"]["short_records"].get<int>(), 0) << v["summary"]["shortest_record"].dump();
 
     const auto report = nlohmann::json::parse(read_file(out / "report.json"));
+    // Every branch leaves its switch G2, as the network's fit built it (the
+    // map's links above check the roads; a branch's first road can follow
+    // its own fit into the junction).
+    const auto& links = report["geometry"]["summary"]["links"];
+    EXPECT_LT(links["max_gap_m"].get<double>(), 1e-3);
+    EXPECT_LT(links["max_heading_jump_rad"].get<double>(), 1e-4);
+    EXPECT_LT(links["max_curvature_jump"].get<double>(), 1e-6);
     const auto& odr = report["opendrive"];
     const auto& topo = report["topology"];
     // netconvert makes one normal edge per road outside junctions (connecting

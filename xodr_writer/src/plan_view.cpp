@@ -20,7 +20,11 @@ std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment, boo
             g.kind = PlanGeometry::Kind::arc;
             break;
         case geometry::PrimitiveKind::spiral:
-            g.kind = PlanGeometry::Kind::spiral;
+            // One whose curvature does not change is a line or an arc:
+            // SUMO's netconvert cannot draw a spiral of rate 0.
+            g.kind = p.curv_start != p.curv_end ? PlanGeometry::Kind::spiral
+                     : p.curv_start == 0.0      ? PlanGeometry::Kind::line
+                                                : PlanGeometry::Kind::arc;
             break;
         }
         g.s = s;

@@ -391,6 +391,19 @@ std::vector<Point2> at_ties(std::vector<Point2> p, const std::optional<Pose>& st
     return p;
 }
 
+// A transition whose ends hold one curvature is a line or an arc, and
+// written so: the ties give it where a short chain between two switches on
+// straight track is one transition (Cologne: 8 spirals from 0 to 0), and
+// SUMO's netconvert cannot draw a spiral whose curvature does not change
+// (it dropped the two roads made of one).
+void constant_transitions_as_arcs(Alignment& a) {
+    for (Primitive& e : a.primitives) {
+        if (e.kind == PrimitiveKind::spiral && e.curv_start == e.curv_end) {
+            e.kind = e.curv_start == 0.0 ? PrimitiveKind::line : PrimitiveKind::arc;
+        }
+    }
+}
+
 } // namespace
 
 double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
@@ -456,6 +469,7 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
         followed.push_back({p[i].x, p[i].y});
     }
     FitResult r = polish(pass, p, all, weight, sigma, start, end);
+    constant_transitions_as_arcs(r.alignment);
     r.quality.noise_sigma_m = sigma;
     r.quality.scatter_sigma_m = guess;
     r.quality.windows = 1;
