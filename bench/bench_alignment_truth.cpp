@@ -2,9 +2,9 @@
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
 // [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing
-// osm|dense|sparse] [--method windowed|design] [--tied] (defaults: 300 routes from
+// osm|dense|sparse] [--method design|windowed] [--tied] (defaults: 300 routes from
 // seed 1000, sigma 0.1 0.3 1.0, 1 % outliers, OSM-like node spacing
-// (alignment_truth.hpp), the windowed fit; --worst lists the
+// (alignment_truth.hpp), the design search (the default fit); --worst lists the
 // N worst routes and arcs; --bound
 // adds each arc's Cramer-Rao bound, design_crlb.hpp; --tied ties both
 // ends to the design's poses, as switches tie a chain). Prints, per sigma, the
@@ -61,7 +61,7 @@ struct Options {
     bool bound = false;
     int first = 1000; // seed of the first route
     truth::Spacing spacing = truth::Spacing::osm;
-    geometry::FitMethod method = geometry::FitMethod::windowed;
+    geometry::FitMethod method = geometry::FitMethod::design_search;
     bool tied = false; // both ends tied to the design's pose there, as a chain between two switches is
 };
 

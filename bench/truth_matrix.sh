@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # The truth bench over every regime issue 37 names: node spacing (OSM-like,
 # dense, sparse) x sigma, for one fit method, as one table row per regime.
-# Usage: [OUTLIERS=F] bench/truth_matrix.sh [windowed|design] [ROUTES] [SIGMAS...]
-# (defaults: windowed, 300 routes, sigma 0.1 0.3 1.0 2.0; OUTLIERS, the
+# Usage: [OUTLIERS=F] bench/truth_matrix.sh [design|windowed] [ROUTES] [SIGMAS...]
+# (defaults: design, 300 routes, sigma 0.1 0.3 1.0 2.0; OUTLIERS, the
 # share of outlier nodes, 0.01).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-method=${1:-windowed}
+method=${1:-design}
 routes=${2:-300}
 shift $(( $# > 2 ? 2 : $# ))
 sigmas=${*:-0.1 0.3 1.0 2.0}
