@@ -16,8 +16,11 @@ namespace {
 // width at any zoom the page is read at.
 constexpr double sample_step_m = 10.0;
 
+// A length a hair over a multiple of the step counts as that multiple: the
+// page convert writes from memory (20.000000000000004 m) and the one read
+// back from map.xodr (written as 20) must sample a road alike.
 std::size_t sample_count(double length) {
-    return std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(length / sample_step_m)) + 1);
+    return std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(length / sample_step_m - 1e-9)) + 1);
 }
 
 long long micro(double deg) { return std::llround(deg * 1e6); }
