@@ -46,8 +46,7 @@ CLI::App* ConvertCommand::add(CLI::App& parent) {
         ->capture_default_str()
         ->check(CLI::IsMember({"design", "windowed"}));
     app->add_flag("--independent-tracks", opt_.independent_tracks,
-                  "Windowed fit: every track on its own nodes only, no parallel track's design offered (the design "
-                  "search fits every track so; docs/geometry.md)");
+                  "Fit every track on its own nodes only: no parallel track's design offered (docs/geometry.md)");
     app->add_option("--road-corridor", opt_.road_corridor_m, "Read roads within this many metres of a track (0: none)")
         ->capture_default_str()
         ->check(finite_range(0.0, 10000.0));

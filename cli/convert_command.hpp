@@ -22,7 +22,7 @@ struct ConvertOptions {
     double road_corridor_m = 300.0;
     double node_noise_m = 0.0; // 0: estimated per chain from its nodes (report.json geometry.summary.node_noise)
     std::string fit_method = "design"; // design (the design search) or windowed (geometry::FitMethod)
-    bool independent_tracks = false; // windowed fit: no parallel track's design offered to a track's fit
+    bool independent_tracks = false; // no parallel track's design offered to a track's fit
     double feature_distance_m = 50.0;
     double station_distance_m = 500.0;
     unsigned threads = 0; // 0: libosmium's default pool size

@@ -79,19 +79,22 @@ TEST(ParallelTracks, ASecondTrackFittedWithTheFirstAsGuideSharesItsCurvature) {
     o.length_m = 5000.0;
     for (std::uint64_t seed : {2001u, 2002u, 2003u, 2004u}) {
         const truth::TruthRoute r = truth::make_route(seed, o);
-        // The scatter given: a sparse chain's own estimate falls back to 0.1 m.
-        FitOptions fo;
-        fo.noise_sigma_m = o.sigma_m;
-        fo.method = FitMethod::windowed; // the only method that takes guides (issue 37 item 7)
-        const FitResult first = fit_alignment(r.nodes, std::nullopt, std::nullopt, fo);
-        const std::vector<Point> second_nodes = beside(r, o.sigma_m, static_cast<std::uint32_t>(seed));
-        const FitResult own = fit_alignment(second_nodes, std::nullopt, std::nullopt, fo);
-        const FitResult guided =
-            fit_alignment(second_nodes, std::nullopt, std::nullopt, fo, {IndexedAlignment(first.alignment)});
-        const double d_own = curvature_difference(first.alignment, own.alignment);
-        const double d_guided = curvature_difference(first.alignment, guided.alignment);
-        EXPECT_LT(d_guided, 0.01) << "seed " << seed << ": on its own " << d_own;
-        // Still on its own nodes.
-        EXPECT_LT(guided.quality.p95_m, 3.0 * o.sigma_m) << "seed " << seed;
+        for (const FitMethod method : {FitMethod::design_search, FitMethod::windowed}) {
+            // The scatter given: the windowed fit's estimate on a sparse chain falls back to 0.1 m.
+            FitOptions fo;
+            fo.noise_sigma_m = o.sigma_m;
+            fo.method = method;
+            const FitResult first = fit_alignment(r.nodes, std::nullopt, std::nullopt, fo);
+            const std::vector<Point> second_nodes = beside(r, o.sigma_m, static_cast<std::uint32_t>(seed));
+            const FitResult own = fit_alignment(second_nodes, std::nullopt, std::nullopt, fo);
+            const FitResult guided =
+                fit_alignment(second_nodes, std::nullopt, std::nullopt, fo, {IndexedAlignment(first.alignment)});
+            const double d_own = curvature_difference(first.alignment, own.alignment);
+            const double d_guided = curvature_difference(first.alignment, guided.alignment);
+            SCOPED_TRACE(method == FitMethod::windowed ? "windowed" : "design search");
+            EXPECT_LT(d_guided, 0.01) << "seed " << seed << ": on its own " << d_own;
+            // Still on its own nodes.
+            EXPECT_LT(guided.quality.p95_m, 3.0 * o.sigma_m) << "seed " << seed;
+        }
     }
 }

@@ -247,6 +247,27 @@ TEST(ScenarioAnchors, LinesRunOnAcrossTheSwitchThroughOrDiverging) {
     EXPECT_NE(none.skipped[0].reason.find("no diverging track"), std::string::npos);
 }
 
+// A ring of two tracks (a tram's turning loop closed on itself): a line
+// does not run on round it to a node it passes already, where the player,
+// routed over one junction twice, takes the loop again (Munich).
+TEST(ScenarioAnchors, LinesDoNotRunRoundALoopBackToANodeTheyPass) {
+    odd::OddProfile p;
+    auto on = [](odd::TaggedElement e, std::size_t track) {
+        e.track = track;
+        return e;
+    };
+    p.elements = {on(tagged(straight, "sc.geo.hz.straight", {}, "20", 0, 500, 0, 500, {"way:20"}), 0),
+                  on(tagged(curve, "sc.geo.hz.curve", {{"radius", 100.0}}, "21", 0, 600, 0, 600, {"way:21"}), 1)};
+    p.track_ends = {{0, 1, 2, 0.0, 0.0}, {1, 2, 1, 0.0, 0.0}};
+    const LineIndex lines(p);
+    EXPECT_DOUBLE_EQ(lines.start(0), 0.0);
+    EXPECT_DOUBLE_EQ(lines.end(0), 500.0);
+    // An open end still runs on: the ring cut at node 1 into a line 1 -> 2 -> 3.
+    p.track_ends = {{0, 1, 2, 0.0, 0.0}, {1, 2, 3, 0.0, 0.0}};
+    const LineIndex open(p);
+    EXPECT_DOUBLE_EQ(open.end(0), 1100.0);
+}
+
 // The stop trigger fires within 5 m of the run's end: an end that would lie
 // a few metres into a road (here 2 m into road 3, after a 3 m junction road)
 // moves back to where the train stops on a road of its route.

@@ -53,3 +53,21 @@ TEST(ScenarioJunctionRoute, ARouteThatIsLinkedStaysAndOneWithoutALinkToo) {
     take_connecting_roads(unlinked, roads);
     EXPECT_EQ(unlinked[1].road_id, "200");
 }
+
+// Munich's crossing 1688834624: roads 93 and 97 both lead to 105 and 106.
+// A route from 97 named the connecting road from 93 (215), which links its
+// two neighbours neither way; the one from 97 to 105 (217) is taken.
+TEST(ScenarioJunctionRoute, ACrossingsConnectingRoadFromTheOtherIncomingRoad) {
+    const std::vector<ConnectingRoad> crossing{{"215", "6912", "93", "105", 5.6},
+                                               {"216", "6912", "93", "106", 5.5},
+                                               {"217", "6912", "97", "105", 5.7},
+                                               {"218", "6912", "97", "106", 5.8}};
+    auto r = route({{"97", 4.2}, {"215", 2.8}, {"105", 5.6}});
+    take_connecting_roads(r, crossing);
+    EXPECT_EQ(r[1].road_id, "217");
+    EXPECT_NEAR(r[1].s, 2.8 / 5.6 * 5.7, 1e-12);
+    // Against the roads' direction, from 105 back to 97.
+    auto back = route({{"105", 5.6}, {"216", 2.0}, {"97", 4.2}});
+    take_connecting_roads(back, crossing);
+    EXPECT_EQ(back[1].road_id, "217");
+}

@@ -164,10 +164,9 @@ private:
 
     // Parallel tracks: each chain is offered the designs of the longer chains
     // it runs beside (parallel_chains.hpp), which it then waits for, unless
-    // such a chain waits on it already. The design search takes no guides
-    // (issue 37 item 7): its chains wait on their ties only.
+    // such a chain waits on it already.
     void plan_guides(const std::vector<std::size_t>& order) {
-        if (!o_.parallel_guides || o_.method != FitMethod::windowed) {
+        if (!o_.parallel_guides) {
             return;
         }
         std::vector<std::size_t> rank(chains_.size());

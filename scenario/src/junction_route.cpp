@@ -20,15 +20,23 @@ void take_connecting_roads(std::vector<LanePlacement>& route, const std::vector<
         const ConnectingRoad& own = *it;
         const std::string& before = route[i - 1].road_id;
         const std::string& after = route[i + 1].road_id;
-        // Travelled the way its own road runs, or against it.
-        const auto links = [&](const ConnectingRoad& r) {
-            return own.from == before ? r.from == before && r.to == after : r.from == after && r.to == before;
-        };
-        if (links(own)) {
+        // Travelled the way a connecting road runs, or against it. Where the
+        // named one links neither way (it leaves a crossing's other incoming
+        // road: Munich's crossing 1688834624, 93 -> 105 named for 97 -> 105),
+        // the one running the way of travel first.
+        const auto along = [&](const ConnectingRoad& r) { return r.from == before && r.to == after; };
+        const auto against = [&](const ConnectingRoad& r) { return r.from == after && r.to == before; };
+        if (along(own) || against(own)) {
             continue;
         }
-        const auto other = std::find_if(roads.begin(), roads.end(),
-                                        [&](const ConnectingRoad& r) { return r.junction == own.junction && links(r); });
+        const auto in_junction = [&](const auto& links) {
+            return std::find_if(roads.begin(), roads.end(),
+                                [&](const ConnectingRoad& r) { return r.junction == own.junction && links(r); });
+        };
+        auto other = in_junction(along);
+        if (other == roads.end()) {
+            other = in_junction(against);
+        }
         if (other != roads.end()) {
             const double share = own.length > 0.0 ? route[i].s / own.length : 0.5;
             route[i].road_id = other->id;

@@ -184,19 +184,32 @@ double LineIndex::append(std::vector<Piece>& out, std::size_t track, bool agains
 
 // From `node`, travelling `heading`, onto the smoothest continuing track
 // again and again, up to max_extension_m, beyond `at` (forward) or before it.
+// Not onto a track that leads back to a node the line passes already
+// (`passed`, and those it passes on the way): round a tram's turning loop a
+// line came back to the switch it had started from, and esmini, routed
+// over one junction twice, took the loop again (Munich: the train never
+// reached its anchor).
 void LineIndex::run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>& ends, std::int64_t node,
-                       double heading, bool forward, double at, std::set<std::size_t> used) const {
+                       double heading, bool forward, double at, std::set<std::size_t> used,
+                       std::set<std::int64_t> passed) const {
     double added = 0.0;
+    passed.insert(node);
     while (added < max_extension_m) {
         const auto next = continuation(ends, node, heading, forward, used);
         if (!next || !lines_.contains(next->track)) {
+            break;
+        }
+        const auto [exit, exit_heading] = exit_of(*end_of(ends, next->track), next->against, forward);
+        if (passed.contains(exit)) {
             break;
         }
         used.insert(next->track);
         const double len = append(out, next->track, next->against, forward, at);
         at += forward ? len : -len;
         added += len;
-        std::tie(node, heading) = exit_of(*end_of(ends, next->track), next->against, forward);
+        node = exit;
+        heading = exit_heading;
+        passed.insert(node);
     }
 }
 
@@ -204,8 +217,8 @@ void LineIndex::run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>
 std::vector<LineIndex::Piece> LineIndex::extend(const std::vector<odd::TrackEnd>& ends,
                                                 const odd::TrackEnd& own) const {
     std::vector<Piece> out = lines_.at(own.track);
-    run_on(out, ends, own.from_node, own.from_heading, false, start(own.track), {own.track});
-    run_on(out, ends, own.to_node, own.to_heading, true, end(own.track), {own.track});
+    run_on(out, ends, own.from_node, own.from_heading, false, start(own.track), {own.track}, {own.to_node});
+    run_on(out, ends, own.to_node, own.to_heading, true, end(own.track), {own.track}, {own.from_node});
     std::stable_sort(out.begin(), out.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
     return out;
 }
@@ -281,7 +294,7 @@ std::vector<LineIndex::Piece> LineIndex::diverging_line(const odd::OddProfile& p
     }
     const double len = append(out, branch.track, branch.against, true, c);
     const auto [far, far_heading] = exit_of(*end_of(profile.track_ends, branch.track), branch.against, true);
-    run_on(out, profile.track_ends, far, far_heading, true, c + len, {e.track, branch.track});
+    run_on(out, profile.track_ends, far, far_heading, true, c + len, {e.track, branch.track}, {*switch_node(e)});
     std::stable_sort(out.begin(), out.end(), [](const Piece& a, const Piece& b) { return a.c0 < b.c0; });
     return out;
 }

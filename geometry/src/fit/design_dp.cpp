@@ -6,6 +6,7 @@
 // exactly (solve_structure), which also recovers every knot's state.
 #include "design_dp.hpp"
 
+#include "design_guide.hpp"
 #include "design_quadratic.hpp"
 #include "design_rules.hpp"
 
@@ -80,10 +81,13 @@ void Search::seed() {
     }
 }
 
-// The curvature prior up to `to`.
+// The curvature prior and the guide's up to `to`.
 void Search::cover(Hypothesis& h, double to) const {
     if (o_.curvature_weight > 0.0 && to > h.covered) {
         design::add_curvature(h.f, (h.covered - h.start) / S, (to - h.start) / S, o_.curvature_weight);
+    }
+    if (o_.guide && to > h.covered) {
+        o_.guide->add(h.f, h.start, h.covered, to);
     }
     h.covered = std::max(h.covered, to);
 }

@@ -10,6 +10,7 @@
 // linear: zero on a line, constant on an arc, linear on a transition.
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -17,6 +18,8 @@
 namespace railodd::geometry::fit {
 
 enum class ElementKind : unsigned char { line, transition, arc };
+
+class GuideCurvature; // design_guide.hpp
 
 struct FrameNode {
     double t = 0.0; // chainage along the reference
@@ -63,6 +66,9 @@ struct DesignDpOptions {
     // a reverse curve's 333 m straight stayed missing, 7.9 m off).
     std::optional<ElementKind> before, after;
     bool refine = true; // the local search after the beam (refine_structure)
+    // A parallel track's curvature the design is pulled to, where there is
+    // one beside the chain (design_guide.hpp).
+    std::shared_ptr<const GuideCurvature> guide;
     std::vector<double> knots; // candidate knots besides the grid's (where no node came, too)
 };
 

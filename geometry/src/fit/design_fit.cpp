@@ -2,6 +2,7 @@
 
 #include "curvature_model.hpp"
 #include "design_dp.hpp"
+#include "design_guide.hpp"
 #include "design_pass.hpp"
 #include "end_constraint.hpp"
 #include "outlier_nodes.hpp"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace railodd::geometry::fit {
 
@@ -30,6 +32,9 @@ constexpr double transition_prior = 3.0;
 // either side; searches at most this many times.
 constexpr double knot_shift_m = 2.0;
 constexpr int search_rounds = 2;
+// A parallel track's curvature held as firmly as a 100 m stretch of this
+// chain's own curvature known to 2e-5 1/m (per metre per (1/m)^2).
+constexpr double guide_weight = 1.0 / (100.0 * 2e-5 * 2e-5);
 
 // The parameters the design spent on the nodes: the start state and each
 // element's length, a transition's slope besides.
@@ -156,6 +161,7 @@ std::vector<double> knots_around(const std::vector<FrameElement>& st) {
 // A chain's tied ends: position, heading and curvature (design_rules.hpp).
 struct Ties {
     std::optional<Pose> start, end;
+    const std::vector<IndexedAlignment>* guides = nullptr; // parallel tracks fitted before (design_guide.hpp)
 };
 
 // What a pass searches: the whole structure (with the previous pass's
@@ -191,6 +197,12 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     }
     o.s1 = std::max(o.s1, o.s0 + 1.0);
     const std::vector<FrameElement> seed = carried(previous, o);
+    if (ties.guides && !ties.guides->empty() && !seed.empty()) {
+        auto guide = std::make_shared<const GuideCurvature>(ref, o.s0, o.s1, *ties.guides, seed, guide_weight);
+        if (!guide->empty()) {
+            o.guide = std::move(guide);
+        }
+    }
     DesignPass pass;
     if (search == Search::whole || seed.empty()) {
         pass.design = search_design(nodes, o, seed);
@@ -286,6 +298,14 @@ FitResult polish(const DesignPass& pass, const std::vector<Point2>& p, const std
     so.transition_prior.assign(el.size(), 0.0);
     for (std::size_t j = 1; j + 1 < so.transition_prior.size(); ++j) {
         so.transition_prior[j] = el[j].kind == ElementKind::transition ? transition_prior : 0.0;
+    }
+    if (pass.options.guide) {
+        for (const FrameElement& e : el) {
+            const GuideCurvature::Mean g = pass.options.guide->over(e.s0, e.s1);
+            so.guide_weight.push_back(g.weight);
+            so.guide_curvature.push_back(g.curvature);
+            so.guide_at.push_back(e.s1 > e.s0 ? std::clamp((g.at - e.s0) / (e.s1 - e.s0), 0.0, 1.0) : 0.5);
+        }
     }
     const SolveReport r = solve(m, p, so);
     FitResult before = unpolished(pass, unsolved, all, sigma, end);
@@ -518,8 +538,8 @@ DesignDpOptions calibrated_options(std::size_t n) {
 }
 
 FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& options) {
-    return fit_with(mapped, {start, end}, options);
+                     const FitOptions& options, const std::vector<IndexedAlignment>& guides) {
+    return fit_with(mapped, {start, end, &guides}, options);
 }
 
 } // namespace railodd::geometry::fit

@@ -27,8 +27,9 @@ DesignDpOptions calibrated_options(std::size_t n);
 FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o, const std::vector<FrameElement>& seed);
 
 // p: distinct nodes in order (at least 2). options.noise_sigma_m > 0 fixes
-// the noise; else it is estimated.
+// the noise; else it is estimated. `guides`: parallel tracks fitted before,
+// whose curvature the design is pulled to beside them (design_guide.hpp).
 FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& options);
+                     const FitOptions& options, const std::vector<IndexedAlignment>& guides);
 
 } // namespace railodd::geometry::fit

@@ -1,5 +1,7 @@
 #include "design_local.hpp"
 
+#include "design_guide.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -78,6 +80,9 @@ StructureCosts::StructureCosts(const std::vector<FrameNode>& nodes, const Design
     mirror_options_.end = o.start ? std::optional<FrameState>(mirror(*o.start)) : std::nullopt;
     mirror_options_.before = o.after;
     mirror_options_.after = o.before;
+    if (o.guide) {
+        mirror_options_.guide = std::make_shared<const GuideCurvature>(o.guide->mirrored());
+    }
 }
 
 void StructureCosts::reset(const std::vector<FrameElement>& st) {

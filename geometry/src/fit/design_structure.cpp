@@ -4,6 +4,7 @@
 // smoother recovers states from an information filter).
 #include "design_dp.hpp"
 
+#include "design_guide.hpp"
 #include "design_local.hpp"
 #include "design_quadratic.hpp"
 
@@ -98,6 +99,9 @@ bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNo
         next = upto;
         if (o.curvature_weight > 0.0) {
             design::add_curvature(f, 0.0, (e.s1 - e.s0) / S, o.curvature_weight);
+        }
+        if (o.guide) {
+            o.guide->add(f, e.s0, e.s0, e.s1);
         }
         if (last) {
             return true;

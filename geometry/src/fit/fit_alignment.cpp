@@ -414,7 +414,7 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
     }
     if (options.method == FitMethod::design_search) {
-        return fit::fit_design(mapped, start, end, options);
+        return fit::fit_design(mapped, start, end, options, guides);
     }
     // Outlier nodes are left out of the fit; its quality is still measured
     // on every node, so the report shows them.

@@ -47,6 +47,11 @@ struct SolveOptions {
     // search's own prior (design_local.cpp), so the polish keeps what the
     // search chose it for.
     std::vector<double> transition_prior;
+    // Per segment, a parallel track's mean curvature over it, where along
+    // the segment (a share of its length) it asks for it, and the weight of
+    // the segment's curvature's distance from it there (empty: none): the
+    // design search's guide (design_guide.hpp), so the polish keeps it.
+    std::vector<double> guide_curvature, guide_at, guide_weight;
 };
 
 struct SolveReport {

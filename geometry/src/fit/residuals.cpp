@@ -114,6 +114,9 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     if (!p.opt.transition_prior.empty()) {
         rows += m.segments();
     }
+    if (!p.opt.guide_weight.empty()) {
+        rows += m.segments();
+    }
     return rows;
 }
 
@@ -177,8 +180,18 @@ double transition_row(const CurvatureModel& m, const Problem& p, std::size_t j) 
     return std::sqrt(w) * std::log(m.lengths[j] / transition_length_for(dk));
 }
 
+// A segment's curvature against its guide's (zero where it has none).
+double guide_row(const CurvatureModel& m, const Problem& p, std::size_t j) {
+    const double w = j < p.opt.guide_weight.size() ? p.opt.guide_weight[j] : 0.0;
+    if (w <= 0.0) {
+        return 0.0;
+    }
+    const double f = p.opt.guide_at[j];
+    return std::sqrt(w) * ((1.0 - f) * m.knot_curvature(j) + f * m.knot_curvature(j + 1) - p.opt.guide_curvature[j]);
+}
+
 // Residual rows: the point rows, then curvature kinks, the ridge, the
-// transition priors. The
+// transition priors, the guide. The
 // end pose is a constraint (end_constraint.hpp), or weighted rows appended
 // where it cannot be one.
 void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
@@ -197,6 +210,11 @@ void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
     if (!p.opt.transition_prior.empty()) {
         for (std::size_t j = 0; j < m.segments(); ++j) {
             r[row++] = transition_row(m, p, j);
+        }
+    }
+    if (!p.opt.guide_weight.empty()) {
+        for (std::size_t j = 0; j < m.segments(); ++j) {
+            r[row++] = guide_row(m, p, j);
         }
     }
 }
@@ -231,6 +249,13 @@ void smoothness_column(const CurvatureModel& m2, const ParameterMap& map, std::s
         for (std::size_t j = a == 0 ? 0 : a - 1; j < m2.segments() && j <= b + 1; ++j) {
             const long at = static_cast<long>(row + j);
             J(at, col) = (transition_row(m2, p, j) - r[at]) / h;
+        }
+        row += m2.segments();
+    }
+    if (!p.opt.guide_weight.empty()) {
+        for (std::size_t j = a == 0 ? 0 : a - 1; j < m2.segments() && j <= b + 1; ++j) {
+            const long at = static_cast<long>(row + j);
+            J(at, col) = (guide_row(m2, p, j) - r[at]) / h;
         }
     }
 }

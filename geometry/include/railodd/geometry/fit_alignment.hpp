@@ -20,9 +20,8 @@ struct Point {
 // default): one L0-penalised search per chain (docs/geometry.md, "Design
 // search"); ahead of the windowed fit on 20 of the truth bench's 24 rows
 // and on the extracts' structure figures (docs/BENCHMARKS.md). `windowed`:
-// the trend filter, candidate structures and LM window by window, the only
-// one that takes parallel guides; kept until the design search wins every
-// row (issue 37).
+// the trend filter, candidate structures and LM window by window; kept
+// until the design search wins every row (issue 37).
 enum class FitMethod { windowed, design_search };
 
 struct FitOptions {
@@ -35,7 +34,7 @@ struct FitOptions {
     double kink_sigma = 5e-4;      // 1/m: allowed change of curvature slope between knots of the fine spline
     double ridge_sigma = 2e-3;     // 1/m: weak pull of the fine spline towards zero curvature
     unsigned threads = 0;          // chains fitted at once by fit_track_graph; 0: one per hardware thread
-    bool parallel_guides = true;   // windowed: fit_track_graph offers a chain the design of the track it runs beside
+    bool parallel_guides = true;   // fit_track_graph offers a chain the design of the track it runs beside
     FitMethod method = FitMethod::design_search;
 };
 

@@ -69,7 +69,7 @@ private:
     std::vector<Piece> extend(const std::vector<odd::TrackEnd>& ends, const odd::TrackEnd& own) const;
     double append(std::vector<Piece>& out, std::size_t track, bool against, bool forward, double at) const;
     void run_on(std::vector<Piece>& out, const std::vector<odd::TrackEnd>& ends, std::int64_t node, double heading,
-                bool forward, double at, std::set<std::size_t> used) const;
+                bool forward, double at, std::set<std::size_t> used, std::set<std::int64_t> passed) const;
     std::vector<Piece> diverging_line(const odd::OddProfile& profile, std::size_t element,
                                       const std::map<std::size_t, std::vector<Piece>>& extended) const;
 };

@@ -1,0 +1,200 @@
+#include "design_guide.hpp"
+
+#include "reference_line.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace railodd::geometry::fit {
+
+namespace {
+
+constexpr double min_offset_m = 2.5, max_offset_m = 6.5; // double track: 3.5-6 m between centres
+constexpr double min_alignment = 0.9995;                  // cosine of the headings' angle: 1.8 degrees
+// A stretch beside the guide at least this long, its offset within this
+// much of its median: a branch leaving a switch runs within 6.5 m of its
+// through track for a few tens of metres at a turnout's angle, and a
+// crossover passes; neither is a parallel track.
+constexpr double min_run_m = 100.0, offset_spread_m = 0.75;
+// The chain's own last design within this of the guide's curvature (1/m,
+// and a share of it): measured on VDE 8.2, Cologne, Liechtenstein and Lauf
+// (docs/BENCHMARKS.md); without the test a prior everywhere took
+// Liechtenstein's double-track difference from 14.5 to 25.7 %.
+constexpr double own_tolerance = 1e-4, own_share = 0.25;
+
+struct Sample {
+    bool beside = false;
+    double k = 0.0, offset = 0.0;
+};
+
+// The concentric curvature a guide asks for at reference point `at`, if it
+// runs beside it.
+Sample guided_curvature(const IndexedAlignment& g, const Pose& at) {
+    const Projection pr = g.project(at.x, at.y);
+    if (!(pr.s > 1e-6 && pr.s < g.length() - 1e-6) || std::abs(pr.offset) < min_offset_m ||
+        std::abs(pr.offset) > max_offset_m) {
+        return {};
+    }
+    const Pose p = g.evaluate(pr.s);
+    const double along = std::cos(p.hdg - at.hdg);
+    if (std::abs(along) < min_alignment) {
+        return {};
+    }
+    const double concentric = p.curvature / (1.0 - pr.offset * p.curvature);
+    return {true, along > 0.0 ? concentric : -concentric, pr.offset};
+}
+
+Sample beside_any(const std::vector<IndexedAlignment>& guides, const Pose& at) {
+    for (const IndexedAlignment& guide : guides) {
+        const Sample s = guided_curvature(guide, at);
+        if (s.beside) {
+            return s;
+        }
+    }
+    return {};
+}
+
+// Runs of samples beside a guide kept where they are long and steady.
+void keep_steady_runs(std::vector<Sample>& samples, double step) {
+    for (std::size_t i = 0; i < samples.size();) {
+        if (!samples[i].beside) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        std::vector<double> off;
+        while (j < samples.size() && samples[j].beside) {
+            off.push_back(samples[j++].offset);
+        }
+        std::nth_element(off.begin(), off.begin() + static_cast<std::ptrdiff_t>(off.size() / 2), off.end());
+        const double median = off[off.size() / 2];
+        std::size_t steady = 0;
+        for (std::size_t q = i; q < j; ++q) {
+            samples[q].beside = std::abs(samples[q].offset - median) <= offset_spread_m;
+            steady += samples[q].beside ? 1 : 0;
+        }
+        if (static_cast<double>(steady) * step < min_run_m) {
+            for (std::size_t q = i; q < j; ++q) {
+                samples[q].beside = false;
+            }
+        }
+        i = j;
+    }
+}
+
+} // namespace
+
+// The curvature of a structure's elements at t (their ends' curvatures).
+double curvature_at(const std::vector<FrameElement>& el, double t) {
+    auto it = std::upper_bound(el.begin(), el.end(), t, [](double x, const FrameElement& e) { return x < e.s1; });
+    if (it == el.end()) {
+        it = el.end() - 1;
+    }
+    const double f = it->s1 > it->s0 ? std::clamp((t - it->s0) / (it->s1 - it->s0), 0.0, 1.0) : 0.0;
+    return it->k0 + f * (it->k1 - it->k0);
+}
+
+GuideCurvature::GuideCurvature(const ReferenceLine& ref, double t0, double t1, const std::vector<IndexedAlignment>& guides,
+                               const std::vector<FrameElement>& own, double weight, double step) {
+    std::vector<Sample> samples;
+    for (double t = t0 + 0.5 * step; t < t1; t += step) {
+        t_.push_back(t);
+        Sample s = beside_any(guides, ref.at(t));
+        if (s.beside && !own.empty() && std::abs(curvature_at(own, t) - s.k) > own_tolerance + own_share * std::abs(s.k)) {
+            s.beside = false;
+        }
+        samples.push_back(s);
+    }
+    keep_steady_runs(samples, step);
+    sums_.push_back({});
+    for (std::size_t i = 0; i < t_.size(); ++i) {
+        const double t = t_[i], g = samples[i].k;
+        const double w = samples[i].beside ? weight * step : 0.0;
+        empty_ = empty_ && !samples[i].beside;
+        Sums s = sums_.back();
+        s.w += w;
+        s.wt += w * t;
+        s.wtt += w * t * t;
+        s.wg += w * g;
+        s.wgt += w * g * t;
+        s.wgg += w * g * g;
+        sums_.push_back(s);
+    }
+}
+
+std::pair<std::size_t, std::size_t> GuideCurvature::samples_in(double a, double b) const {
+    const auto at = [&](double x) {
+        return static_cast<std::size_t>(std::lower_bound(t_.begin(), t_.end(), x) - t_.begin());
+    };
+    return {at(a), at(b)};
+}
+
+GuideCurvature GuideCurvature::mirrored() const {
+    GuideCurvature m;
+    m.empty_ = empty_;
+    m.sums_.push_back({});
+    const std::size_t n = t_.size();
+    for (std::size_t j = n; j-- > 0;) {
+        // Sample j's own terms, at chainage -t.
+        const Sums& a = sums_[j];
+        const Sums& b = sums_[j + 1];
+        const double w = b.w - a.w, wg = b.wg - a.wg, wgg = b.wgg - a.wgg, t = -t_[j];
+        Sums s = m.sums_.back();
+        s.w += w;
+        s.wt += w * t;
+        s.wtt += w * t * t;
+        s.wg += wg;
+        s.wgt += wg * t;
+        s.wgg += wgg;
+        m.t_.push_back(t);
+        m.sums_.push_back(s);
+    }
+    return m;
+}
+
+void GuideCurvature::add(design::Quad& f, double s, double a, double b) const {
+    if (empty_ || !(b > a)) {
+        return;
+    }
+    const auto [i, j] = samples_in(a, b);
+    if (j <= i) {
+        return;
+    }
+    const Sums& lo = sums_[i];
+    const Sums& hi = sums_[j];
+    const double w = hi.w - lo.w;
+    if (!(w > 0.0)) {
+        return;
+    }
+    // In the element's scaled chainage u = (t - s) / S.
+    const double S = design::S;
+    const double wt = hi.wt - lo.wt, wtt = hi.wtt - lo.wtt, wg = hi.wg - lo.wg, wgt = hi.wgt - lo.wgt;
+    const double wu = (wt - s * w) / S, wuu = (wtt - 2.0 * s * wt + s * s * w) / (S * S);
+    const double wgu = (wgt - s * wg) / S;
+    const double S2 = S * S, S4 = S2 * S2;
+    const bool k = f.free & 4u, slope = f.free & 8u;
+    if (k) {
+        f.P(2, 2) += w / S4;
+        f.q(2) += wg / S2;
+    }
+    if (k && slope) {
+        f.P(2, 3) += wu / S4;
+        f.P(3, 2) += wu / S4;
+    }
+    if (slope) {
+        f.P(3, 3) += wuu / S4;
+        f.q(3) += wgu / S2;
+    }
+    f.c += hi.wgg - lo.wgg;
+}
+
+GuideCurvature::Mean GuideCurvature::over(double a, double b) const {
+    const auto [i, j] = samples_in(a, b);
+    const double w = j > i ? sums_[j].w - sums_[i].w : 0.0;
+    if (!(w > 0.0)) {
+        return {};
+    }
+    return {w, (sums_[j].wg - sums_[i].wg) / w, (sums_[j].wt - sums_[i].wt) / w};
+}
+
+} // namespace railodd::geometry::fit

@@ -1,0 +1,55 @@
+#pragma once
+// A parallel track's design as a prior on a chain's curvature in the design
+// search (issue 37 item 7): where the chain's reference runs 2.5-6.5 m
+// beside a track already fitted, the same way or the other, the design's
+// curvature is pulled to the neighbour's concentric one, k / (1 - d k) at
+// offset d, so the two tracks of a double-track line share their curves and
+// their knots where their nodes allow.
+#include "design_quadratic.hpp"
+
+#include "railodd/geometry/indexed_alignment.hpp"
+
+#include <utility>
+#include <vector>
+
+namespace railodd::geometry::fit {
+
+class ReferenceLine;
+
+class GuideCurvature {
+public:
+    // Sampled every `step` metres of the reference over chainages [t0, t1];
+    // `weight` per metre per (1/m)^2, in the cost's units. Only where the
+    // chain's own last design (`own`, in this frame) agrees with the guide
+    // within the noise of a design's curvature: where they differ more, the
+    // neighbour's curve is not this track's (a track leaving for a flyover,
+    // a siding beside a platform).
+    GuideCurvature(const ReferenceLine& ref, double t0, double t1, const std::vector<IndexedAlignment>& guides,
+                   const std::vector<FrameElement>& own, double weight, double step = 2.0);
+    bool empty() const { return empty_; }
+    // The same prior over chainages negated (StructureCosts' mirrored chain;
+    // curvature keeps its sign when the chainage runs the other way).
+    GuideCurvature mirrored() const;
+    // Adds sum w (k(t) - g(t))^2 over the samples in [a, b) to the cost of
+    // an element starting at chainage s (k = (x2 + x3 u) / S^2, u = (t - s) / S).
+    void add(design::Quad& f, double s, double a, double b) const;
+    // The prior over [a, b): its weight, the mean curvature it asks for
+    // and the mean chainage it asks for it at (weight 0 where it has none).
+    struct Mean {
+        double weight = 0.0, curvature = 0.0, at = 0.0;
+    };
+    Mean over(double a, double b) const;
+
+private:
+    GuideCurvature() = default;
+    struct Sums {
+        double w = 0, wt = 0, wtt = 0, wg = 0, wgt = 0, wgg = 0;
+    };
+    // The samples in [a, b): indices [first, last).
+    std::pair<std::size_t, std::size_t> samples_in(double a, double b) const;
+    std::vector<double> t_;  // sample chainages, ascending
+    std::vector<Sums> sums_; // prefix sums: sums_[i] over samples [0, i)
+    bool empty_ = true;
+};
+
+} // namespace railodd::geometry::fit
