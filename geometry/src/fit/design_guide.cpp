@@ -82,8 +82,6 @@ void keep_steady_runs(std::vector<Sample>& samples, double step) {
     }
 }
 
-} // namespace
-
 // The curvature of a structure's elements at t (their ends' curvatures).
 double curvature_at(const std::vector<FrameElement>& el, double t) {
     auto it = std::upper_bound(el.begin(), el.end(), t, [](double x, const FrameElement& e) { return x < e.s1; });
@@ -94,11 +92,14 @@ double curvature_at(const std::vector<FrameElement>& el, double t) {
     return it->k0 + f * (it->k1 - it->k0);
 }
 
+} // namespace
+
 GuideCurvature::GuideCurvature(const ReferenceLine& ref, double t0, double t1, const std::vector<IndexedAlignment>& guides,
                                const std::vector<FrameElement>& own, double weight, double step) {
+    std::vector<double> ts;
     std::vector<Sample> samples;
     for (double t = t0 + 0.5 * step; t < t1; t += step) {
-        t_.push_back(t);
+        ts.push_back(t);
         Sample s = beside_any(guides, ref.at(t));
         if (s.beside && !own.empty() && std::abs(curvature_at(own, t) - s.k) > own_tolerance + own_share * std::abs(s.k)) {
             s.beside = false;
@@ -106,20 +107,22 @@ GuideCurvature::GuideCurvature(const ReferenceLine& ref, double t0, double t1, c
         samples.push_back(s);
     }
     keep_steady_runs(samples, step);
-    sums_.push_back({});
-    for (std::size_t i = 0; i < t_.size(); ++i) {
-        const double t = t_[i], g = samples[i].k;
-        const double w = samples[i].beside ? weight * step : 0.0;
-        empty_ = empty_ && !samples[i].beside;
-        Sums s = sums_.back();
-        s.w += w;
-        s.wt += w * t;
-        s.wtt += w * t * t;
-        s.wg += w * g;
-        s.wgt += w * g * t;
-        s.wgg += w * g * g;
-        sums_.push_back(s);
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+        const double w = samples[i].beside ? weight * step : 0.0, g = samples[i].k;
+        append(ts[i], w, w * g, w * g * g);
     }
+}
+
+void GuideCurvature::append(double t, double w, double wg, double wgg) {
+    Sums s = sums_.back();
+    s.w += w;
+    s.wt += w * t;
+    s.wtt += w * t * t;
+    s.wg += wg;
+    s.wgt += wg * t;
+    s.wgg += wgg;
+    t_.push_back(t);
+    sums_.push_back(s);
 }
 
 std::pair<std::size_t, std::size_t> GuideCurvature::samples_in(double a, double b) const {
@@ -131,29 +134,17 @@ std::pair<std::size_t, std::size_t> GuideCurvature::samples_in(double a, double 
 
 GuideCurvature GuideCurvature::mirrored() const {
     GuideCurvature m;
-    m.empty_ = empty_;
-    m.sums_.push_back({});
-    const std::size_t n = t_.size();
-    for (std::size_t j = n; j-- > 0;) {
+    for (std::size_t j = t_.size(); j-- > 0;) {
         // Sample j's own terms, at chainage -t.
         const Sums& a = sums_[j];
         const Sums& b = sums_[j + 1];
-        const double w = b.w - a.w, wg = b.wg - a.wg, wgg = b.wgg - a.wgg, t = -t_[j];
-        Sums s = m.sums_.back();
-        s.w += w;
-        s.wt += w * t;
-        s.wtt += w * t * t;
-        s.wg += wg;
-        s.wgt += wg * t;
-        s.wgg += wgg;
-        m.t_.push_back(t);
-        m.sums_.push_back(s);
+        m.append(-t_[j], b.w - a.w, b.wg - a.wg, b.wgg - a.wgg);
     }
     return m;
 }
 
 void GuideCurvature::add(design::Quad& f, double s, double a, double b) const {
-    if (empty_ || !(b > a)) {
+    if (empty() || !(b > a)) {
         return;
     }
     const auto [i, j] = samples_in(a, b);

@@ -26,7 +26,7 @@ public:
     // a siding beside a platform).
     GuideCurvature(const ReferenceLine& ref, double t0, double t1, const std::vector<IndexedAlignment>& guides,
                    const std::vector<FrameElement>& own, double weight, double step = 2.0);
-    bool empty() const { return empty_; }
+    bool empty() const { return !(sums_.back().w > 0.0); }
     // The same prior over chainages negated (StructureCosts' mirrored chain;
     // curvature keeps its sign when the chainage runs the other way).
     GuideCurvature mirrored() const;
@@ -47,9 +47,10 @@ private:
     };
     // The samples in [a, b): indices [first, last).
     std::pair<std::size_t, std::size_t> samples_in(double a, double b) const;
-    std::vector<double> t_;  // sample chainages, ascending
-    std::vector<Sums> sums_; // prefix sums: sums_[i] over samples [0, i)
-    bool empty_ = true;
+    // A sample at chainage t with its terms w, w g and w g^2.
+    void append(double t, double w, double wg, double wgg);
+    std::vector<double> t_;          // sample chainages, ascending
+    std::vector<Sums> sums_{Sums{}}; // prefix sums: sums_[i] over samples [0, i)
 };
 
 } // namespace railodd::geometry::fit
