@@ -1,5 +1,6 @@
 #include "batch_routes.hpp"
 
+#include "railodd/convert/options.hpp"
 #include "railodd/util/yaml_support.hpp"
 
 #include <fstream>
@@ -13,52 +14,51 @@ namespace fs = std::filesystem;
 
 namespace {
 
-enum class Kind { path, path_list, text, number, integer, flag, bbox };
+using convert::OptionKind;
 
 struct Key {
-    const char* yaml;
-    const char* flag;
-    Kind kind;
+    std::string yaml;
+    std::string flag;
+    OptionKind kind;
+    const convert::OptionSpec* spec = nullptr; // a convert option's row, whose check the value passes
 };
 
-// One row per ConvertOptions field a route may set (convert_command.hpp);
-// `threads` and `no_timings` are the batch's to choose, `input` is positional.
-constexpr Key convert_keys[] = {
-    {"bbox", "--bbox", Kind::bbox},
-    {"polygon", "--polygon", Kind::path},
-    {"relation", "--relation", Kind::integer},
-    {"field_mapping", "--field-mapping", Kind::path},
-    {"dem", "--dem", Kind::path_list},
-    {"road_corridor", "--road-corridor", Kind::number},
-    {"node_noise", "--node-noise", Kind::number},
-    {"feature_distance", "--feature-distance", Kind::number},
-    {"station_distance", "--station-distance", Kind::number},
-    {"estimate_cant", "--estimate-cant", Kind::flag},
-    {"strict", "--strict", Kind::flag},
-    {"debug_outputs", "--debug-outputs", Kind::flag},
-    {"odd_user_data", "--odd-user-data", Kind::flag},
-    {"odr_version", "--odr-version", Kind::text},
-    {"taxonomy", "--taxonomy", Kind::path},
-    {"from", "--from", Kind::text},
-    {"to", "--to", Kind::text},
-};
+// The convert options a route may set: the table's per-route rows
+// (railodd/convert/options.hpp). `threads` and `no_timings` are the batch's
+// to choose, `input` is the route's own key.
+const std::vector<Key>& convert_keys() {
+    static const std::vector<Key> keys = [] {
+        std::vector<Key> k;
+        for (const convert::OptionSpec& s : convert::option_table()) {
+            if (s.per_route) {
+                k.push_back({std::string{s.key}, convert::flag_of(s), s.kind, &s});
+            }
+        }
+        return k;
+    }();
+    return keys;
+}
 
 // ScenariosOptions fields (scenarios_command.hpp); the taxonomy is the route's.
-constexpr Key scenario_keys[] = {
-    {"strategy", "--strategy", Kind::text},       {"count", "--count", Kind::integer},
-    {"seed", "--seed", Kind::integer},            {"templates", "--templates", Kind::path},
-    {"catalog", "--catalog", Kind::path},         {"max_anchors", "--max-anchors", Kind::integer},
-    {"odd_spec", "--odd-spec", Kind::path},       {"osc_version", "--osc-version", Kind::text},
-    {"target", "--target", Kind::text},           {"map_corridor", "--map-corridor", Kind::number},
+const std::vector<Key> scenario_keys = {
+    {"strategy", "--strategy", OptionKind::text},       {"count", "--count", OptionKind::integer},
+    {"seed", "--seed", OptionKind::integer},            {"templates", "--templates", OptionKind::path},
+    {"catalog", "--catalog", OptionKind::path},         {"max_anchors", "--max-anchors", OptionKind::integer},
+    {"odd_spec", "--odd-spec", OptionKind::path},       {"osc_version", "--osc-version", OptionKind::text},
+    {"target", "--target", OptionKind::text},           {"map_corridor", "--map-corridor", OptionKind::number},
 };
 
-const std::initializer_list<std::string_view> route_keys = {
-    "id", "input", "scenarios", "bbox", "polygon", "relation", "field_mapping", "dem", "road_corridor",
-    "node_noise", "feature_distance", "station_distance", "estimate_cant", "strict", "debug_outputs", "odd_user_data",
-    "odr_version", "taxonomy", "from", "to", "timeout"};
-const std::initializer_list<std::string_view> scenario_key_names = {
-    "strategy", "count", "seed", "templates", "catalog", "max_anchors", "odd_spec", "osc_version", "target",
-    "map_corridor"};
+std::vector<std::string_view> key_names(const std::vector<Key>& keys, std::vector<std::string_view> own) {
+    for (const Key& k : keys) {
+        own.push_back(k.yaml);
+    }
+    return own;
+}
+
+const std::vector<std::string_view>& route_keys() {
+    static const std::vector<std::string_view> names = key_names(convert_keys(), {"id", "input", "scenarios", "timeout"});
+    return names;
+}
 
 using Options = std::vector<std::pair<std::string, std::vector<std::string>>>;
 
@@ -68,6 +68,7 @@ struct Reader {
 
     std::string path(const YAML::Node& n, const std::string& what, BatchRoute& r) const {
         const fs::path p{yaml::scalar(file, n, what)};
+        yaml::require(file, n, !p.empty(), what + ": the path is empty");
         const std::string abs = (p.is_absolute() ? p : base / p).lexically_normal().string();
         r.files.push_back(abs);
         return abs;
@@ -96,33 +97,46 @@ struct Reader {
         return parts[0] + "," + parts[1] + "," + parts[2] + "," + parts[3];
     }
 
-    // Appends the flag and its values; a false flag adds nothing.
-    void value(const Key& k, const YAML::Node& n, BatchRoute& r, Options& out, nlohmann::ordered_json& spec) const {
-        std::vector<std::string> v;
+    std::vector<std::string> values(const Key& k, const YAML::Node& n, BatchRoute& r) const {
         const std::string what = k.yaml;
         switch (k.kind) {
-        case Kind::path: v.push_back(path(n, what, r)); break;
-        case Kind::path_list:
-            if (n.IsSequence()) {
-                for (const auto& item : n) {
-                    v.push_back(path(item, what, r));
-                }
-            } else {
-                v.push_back(path(n, what, r));
+        case OptionKind::path: return {path(n, what, r)};
+        case OptionKind::paths: {
+            if (!n.IsSequence()) {
+                return {path(n, what, r)};
             }
-            break;
-        case Kind::text: v.push_back(yaml::scalar(file, n, what)); break;
-        case Kind::number: yaml::number(file, n, what); v.push_back(n.Scalar()); break;
-        case Kind::integer: v.push_back(integer(n, what)); break;
-        case Kind::bbox: v.push_back(bbox(n)); break;
-        case Kind::flag:
-            spec[k.yaml] = yaml::boolean(file, n, what);
+            std::vector<std::string> v;
+            for (const auto& item : n) {
+                v.push_back(path(item, what, r));
+            }
+            return v;
+        }
+        case OptionKind::number: yaml::number(file, n, what); return {n.Scalar()};
+        case OptionKind::count:
+        case OptionKind::integer: return {integer(n, what)};
+        case OptionKind::bbox: return {bbox(n)};
+        case OptionKind::text:
+        case OptionKind::flag: break;
+        }
+        return {yaml::scalar(file, n, what)};
+    }
+
+    // Appends the flag and its values, checked as the command line checks
+    // them; a false flag adds nothing.
+    void value(const Key& k, const YAML::Node& n, BatchRoute& r, Options& out, nlohmann::ordered_json& spec) const {
+        if (k.kind == OptionKind::flag) {
+            spec[k.yaml] = yaml::boolean(file, n, k.yaml);
             if (spec[k.yaml].get<bool>()) {
-                out.emplace_back(k.flag, v);
+                out.emplace_back(k.flag, std::vector<std::string>{});
             }
             return;
         }
-        spec[k.yaml] = v.size() == 1 && k.kind != Kind::path_list ? nlohmann::ordered_json(v[0]) : nlohmann::ordered_json(v);
+        std::vector<std::string> v = values(k, n, r);
+        for (const std::string& text : v) {
+            const std::string problem = k.spec ? convert::check_value(*k.spec, text) : std::string{};
+            yaml::require(file, n, problem.empty(), k.yaml + ": " + problem);
+        }
+        spec[k.yaml] = v.size() == 1 && k.kind != OptionKind::paths ? nlohmann::ordered_json(v[0]) : nlohmann::ordered_json(v);
         out.emplace_back(k.flag, std::move(v));
     }
 };
@@ -152,7 +166,7 @@ void read_scenarios(const Reader& rd, const YAML::Node& route, const YAML::Node&
     const YAML::Node rmap = own && own.IsMap() ? own : YAML::Node{};
     for (const YAML::Node& m : {dmap, rmap}) {
         if (m) {
-            yaml::check_keys(rd.file, m, scenario_key_names, "scenarios");
+            yaml::check_keys(rd.file, m, key_names(scenario_keys, {}), "scenarios");
         }
     }
     r.scenarios = true;
@@ -174,7 +188,7 @@ void read_scenarios(const Reader& rd, const YAML::Node& route, const YAML::Node&
 
 BatchRoute read_route(const Reader& rd, const YAML::Node& node, const YAML::Node& defaults) {
     yaml::require(rd.file, node, node.IsMap(), "a route must be a map with id, input and options");
-    yaml::check_keys(rd.file, node, route_keys, "route");
+    yaml::check_keys(rd.file, node, route_keys(), "route");
     BatchRoute r;
     r.line = yaml::line_of(node);
     yaml::require(rd.file, node, static_cast<bool>(node["id"]), "a route needs an id");
@@ -185,8 +199,8 @@ BatchRoute read_route(const Reader& rd, const YAML::Node& node, const YAML::Node
     r.input = rd.path(input, "input", r);
     r.spec["input"] = r.input;
     nlohmann::ordered_json convert = nlohmann::ordered_json::object();
-    for (const Key& k : convert_keys) {
-        if (const YAML::Node v = pick(node, defaults, k.yaml)) {
+    for (const Key& k : convert_keys()) {
+        if (const YAML::Node v = pick(node, defaults, k.yaml.c_str())) {
             rd.value(k, v, r, r.convert, convert);
         }
     }
@@ -231,7 +245,7 @@ BatchFile load_batch_file(const fs::path& path) {
     const YAML::Node defaults = root["defaults"];
     if (defaults) {
         yaml::require(rd.file, defaults, defaults.IsMap(), "defaults must be a map of route options");
-        yaml::check_keys(rd.file, defaults, route_keys, "defaults");
+        yaml::check_keys(rd.file, defaults, route_keys(), "defaults");
         yaml::require(rd.file, defaults, !defaults["id"], "defaults cannot give an id");
     }
     const YAML::Node routes = root["routes"];

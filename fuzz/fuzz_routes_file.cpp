@@ -1,4 +1,4 @@
-// The routes file of `railodd batch` (cli/batch_routes.cpp, built in).
+// The routes file of `railodd batch` (cli/batch_routes.cpp, in railodd_cli).
 #include "fuzz_support.hpp"
 
 #include "batch_routes.hpp"

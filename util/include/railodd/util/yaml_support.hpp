@@ -79,7 +79,7 @@ inline YAML::Node load_file(const std::filesystem::path& path, const std::string
 }
 
 // Refuses keys of `map` outside `allowed`, naming `context` (e.g. "element 'Scenery'").
-inline void check_keys(const std::string& file, const YAML::Node& map, std::initializer_list<std::string_view> allowed,
+inline void check_keys(const std::string& file, const YAML::Node& map, const std::vector<std::string_view>& allowed,
                        const std::string& context) {
     for (const auto& kv : map) {
         const auto key = kv.first.Scalar();
@@ -91,6 +91,11 @@ inline void check_keys(const std::string& file, const YAML::Node& map, std::init
             fail(file, kv.first, context + ": unknown key '" + key + "' (expected " + list + ")");
         }
     }
+}
+
+inline void check_keys(const std::string& file, const YAML::Node& map, std::initializer_list<std::string_view> allowed,
+                       const std::string& context) {
+    check_keys(file, map, std::vector<std::string_view>(allowed), context);
 }
 
 // A single value; text that XML cannot carry (control characters from "\x01"

@@ -1,7 +1,7 @@
 #pragma once
 // convert's last phases: the ODD profile tagged and every output staged
-// (convert_command.cpp runs the phases before them).
-#include "convert_command.hpp"
+// (pipeline.cpp runs the phases before them).
+#include "railodd/convert/options.hpp"
 
 #include "railodd/geometry/cant.hpp"
 #include "railodd/geometry/crossings.hpp"
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-namespace railodd::cli {
+namespace railodd::convert {
 
 struct Geometry {
     geometry::TrackGraph tracks;
@@ -56,7 +56,7 @@ struct Profiled {
 // section, while map.xodr is written on a second thread; a route's
 // (--from/--to, --relation) or one carried into map.xodr (--odd-user-data)
 // is made whole first.
-Profiled profile_and_write(OutputStage& stage, const ConvertOptions& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
                            const xodr::MapInput& map_input, const xodr::MapBuild& map, xodr::Revision revision,
                            PhaseTimer& timer);
 
@@ -66,4 +66,4 @@ Profiled profile_and_write(OutputStage& stage, const ConvertOptions& o, const in
 void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
                 const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result);
 
-} // namespace railodd::cli
+} // namespace railodd::convert

@@ -1,4 +1,4 @@
-#include "convert_outputs.hpp"
+#include "outputs.hpp"
 
 #include "railodd/geometry/dump.hpp"
 #include "railodd/ingest/dump.hpp"
@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <future>
 
-namespace railodd::cli {
+namespace railodd::convert {
 
 namespace {
 
@@ -23,7 +23,7 @@ std::filesystem::path taxonomy_path(const std::string& option) {
 // With --from/--to, the profile along the route between the two stations;
 // else with --relation, along the relation's member ways (the map stays the
 // whole selection); the route for report.json.
-std::optional<odd::Route> route_profile(const ConvertOptions& o, const ingest::IngestResult& r, const Geometry& g,
+std::optional<odd::Route> route_profile(const Options& o, const ingest::IngestResult& r, const Geometry& g,
                                         const odd::Taxonomy& taxonomy, const odd::OddProfile& network,
                                         odd::OddProfile& along) {
     if (o.from.empty() && !r.relation) {
@@ -92,7 +92,7 @@ private:
 
 // The whole network's profile straight into its files, while map.xodr (and
 // the debug outputs) are written on a second thread: both only read the map.
-Profiled stream_profile(OutputStage& stage, const ConvertOptions& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
                         const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
                         PhaseTimer& timer) {
     std::future<void> map_written = std::async(o.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
@@ -115,7 +115,7 @@ Profiled stream_profile(OutputStage& stage, const ConvertOptions& o, const inges
 }
 
 // The profile made whole: along a route, or carried into map.xodr's userData.
-Profiled whole_profile(OutputStage& stage, const ConvertOptions& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled whole_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
                        const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
                        PhaseTimer& timer) {
     odd::OddProfile network = odd::tag_route(in, taxonomy);
@@ -144,7 +144,7 @@ Profiled whole_profile(OutputStage& stage, const ConvertOptions& o, const ingest
 
 } // namespace
 
-Profiled profile_and_write(OutputStage& stage, const ConvertOptions& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
                            const xodr::MapInput& map_input, const xodr::MapBuild& map, xodr::Revision revision,
                            PhaseTimer& timer) {
     // The tagger builds each batch's alignment indexes itself: the network's
@@ -183,4 +183,4 @@ void write_page(OutputStage& stage, const std::string& outdir, Profiled& profile
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
 }
 
-} // namespace railodd::cli
+} // namespace railodd::convert
