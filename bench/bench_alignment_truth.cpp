@@ -1,4 +1,4 @@
-// The alignment fit against ground truth (data/alignment_truth): seeded
+// The alignment fit against ground truth (synthetic/alignment_truth): seeded
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
 // [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing

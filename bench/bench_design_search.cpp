@@ -1,5 +1,5 @@
 // The design search alone (geometry/src/fit/design_dp.hpp) against the
-// structure it is looking for. Each truth route (data/alignment_truth) is
+// structure it is looking for. Each truth route (synthetic/alignment_truth) is
 // developed in the frame of its own design, its nodes weighted by the true
 // noise, and searched as the fit searches (design_fit.hpp search_design:
 // calibrated options, a first search, then one from its design); the true

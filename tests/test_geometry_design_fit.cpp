@@ -1,6 +1,6 @@
 // The design search as a chain's fit (FitMethod::design_search,
 // geometry/src/fit/design_fit.cpp) on routes of known design
-// (data/alignment_truth): near the true centreline, about the design's
+// (synthetic/alignment_truth): near the true centreline, about the design's
 // element count, the noise read from the nodes, tied ends met.
 #include "design_fit_support.hpp"
 #include "railodd/geometry/fit_alignment.hpp"

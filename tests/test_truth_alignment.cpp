@@ -1,4 +1,4 @@
-// The ground-truth generator for the alignment fit (data/alignment_truth):
+// The ground-truth generator for the alignment fit (synthetic/alignment_truth):
 // designs that are G2 and follow the design rules, nodes drawn as mappers
 // draw them, a score that is zero for the design itself, and a fixed subset
 // of routes fitted at default options as a regression guard on the fit.

@@ -33,7 +33,7 @@ DesignSummary summarise_design(const std::vector<Alignment>& alignments);
 
 // Curvature sign changes along one alignment: the sign of curvatures beyond
 // 1/20,000 m, sampled every 5 m, changing (straights between do not count
-// as a sign). Also the ground truth's count (data/alignment_truth).
+// as a sign). Also the ground truth's count (synthetic/alignment_truth).
 std::size_t curvature_sign_changes(const IndexedAlignment& alignment);
 // The same on alignments already indexed (at 2 m).
 DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks);
