@@ -5,6 +5,7 @@
 // real extracts.
 #include "railodd/geometry/crossings.hpp"
 #include "railodd/geometry/feature_attachment.hpp"
+#include "railodd/geometry/fitted_map.hpp"
 #include "railodd/geometry/profiles.hpp"
 #include "railodd/geometry/road_fit.hpp"
 #include "railodd/ingest/osm_reader.hpp"
@@ -28,6 +29,16 @@ struct Network {
     std::vector<geometry::IndexedAlignment> indexed;
     odd::Taxonomy taxonomy;
 };
+
+// The geometry stage's result as the map builder and the tagger take it;
+// with_indexes: the tracks' 2 m indexes too (as convert hands them on).
+inline geometry::FittedMap fitted_map(const Network& n, bool with_indexes) {
+    geometry::FittedMap g{n.tracks, n.fitted, n.profiles, n.cants, n.attachment, n.crossings, n.roads, n.fitted_roads, {}};
+    if (with_indexes) {
+        g.indexed = n.indexed;
+    }
+    return g;
+}
 
 inline Network network_of(const fs::path& osm) {
     Network x;
@@ -72,8 +83,8 @@ public:
 
 // prebuilt: the tracks' indexes handed to the tagger, as convert once did.
 inline BatchRecorder tag_in_batches(const Network& n, std::size_t batch, bool prebuilt) {
-    const xodr::MapInput in{n.ingest, n.tracks, n.fitted, n.profiles, n.cants, n.roads, n.fitted_roads,
-                            n.attachment, n.crossings, prebuilt ? &n.indexed : nullptr};
+    const geometry::FittedMap g = fitted_map(n, prebuilt);
+    const xodr::MapInput in{n.ingest, g};
     const xodr::MapBuild build = xodr::build_map(in, xodr::MapOptions{});
     BatchRecorder r;
     odd::tag_network({in, build}, n.taxonomy, r, batch);

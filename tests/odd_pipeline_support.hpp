@@ -49,7 +49,8 @@ struct Pipeline {
     }
 
     odd::OddProfile tag() const {
-        const xodr::MapInput in{ingest, tracks, fitted, profiles, cants, roads, fitted_roads, attachment, crossings};
+        const geometry::FittedMap g{tracks, fitted, profiles, cants, attachment, crossings, roads, fitted_roads, {}};
+        const xodr::MapInput in{ingest, g};
         const xodr::MapBuild build = xodr::build_map(in, xodr::MapOptions{});
         return odd::tag_route({in, build}, taxonomy);
     }

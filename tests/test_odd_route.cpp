@@ -44,8 +44,8 @@ const Fixture& fixture() {
         x.truth = nlohmann::json::parse(read_file(files.truth));
         static_cast<Network&>(x) = network_of(files.osm);
         // The map and profile made without the indexes that placed the features.
-        const xodr::MapInput in{x.ingest, x.tracks, x.fitted, x.profiles, x.cants, x.roads,
-                                x.fitted_roads, x.attachment, x.crossings};
+        const geometry::FittedMap g = fitted_map(x, false);
+        const xodr::MapInput in{x.ingest, g};
         x.build = xodr::build_map(in, xodr::MapOptions{});
         x.profile = odd::tag_route({in, x.build}, x.taxonomy);
         return x;
@@ -91,8 +91,8 @@ TEST(OddRoute, PrebuiltTrackIndexesChangeNoOutput) {
     // builder, the tagger and the report; without them each indexes the
     // tracks itself.
     const Fixture& f = fixture();
-    const xodr::MapInput in{f.ingest, f.tracks,       f.fitted,     f.profiles,  f.cants,
-                            f.roads,  f.fitted_roads, f.attachment, f.crossings, &f.indexed};
+    const geometry::FittedMap g = fitted_map(f, true);
+    const xodr::MapInput in{f.ingest, g};
     const xodr::MapBuild build = xodr::build_map(in, xodr::MapOptions{});
     EXPECT_EQ(xodr::write_xodr(build.map, xodr::Revision::v1_7), xodr::write_xodr(f.build.map, xodr::Revision::v1_7));
     const odd::OddProfile profile = odd::tag_route({in, build}, f.taxonomy);

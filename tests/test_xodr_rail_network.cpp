@@ -53,8 +53,9 @@ const Fixture& fixture() {
         }
         x.attachment = geometry::attach_features(x.tracks, ia, x.ingest.features, 50.0, 500.0);
         x.crossings = geometry::find_crossings(x.tracks, x.ingest.tracks, x.ingest.roads, x.ingest.features);
-        const xodr::MapInput in{x.ingest, x.tracks, x.fitted, x.profiles, x.cants, x.roads,
-                                x.fitted_roads, x.attachment, x.crossings};
+        const geometry::FittedMap g{x.tracks, x.fitted, x.profiles, x.cants, x.attachment, x.crossings, x.roads,
+                                    x.fitted_roads, {}};
+        const xodr::MapInput in{x.ingest, g};
         x.build = xodr::build_map(in, xodr::MapOptions{});
         return x;
     }();

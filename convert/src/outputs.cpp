@@ -23,7 +23,7 @@ std::filesystem::path taxonomy_path(const std::string& option) {
 // With --from/--to, the profile along the route between the two stations;
 // else with --relation, along the relation's member ways (the map stays the
 // whole selection); the route for report.json.
-std::optional<odd::Route> route_profile(const Options& o, const ingest::IngestResult& r, const Geometry& g,
+std::optional<odd::Route> route_profile(const Options& o, const ingest::IngestResult& r, const geometry::FittedMap& g,
                                         const odd::Taxonomy& taxonomy, const odd::OddProfile& network,
                                         odd::OddProfile& along) {
     if (o.from.empty() && !r.relation) {
@@ -39,7 +39,7 @@ std::optional<odd::Route> route_profile(const Options& o, const ingest::IngestRe
 // The diagnostic GeoJSON files (the selected input; the fitted track and road
 // centrelines sampled back to WGS84), with --debug-outputs only. Without it,
 // any left by an earlier run go: they would describe another map.
-void write_debug_outputs(OutputStage& stage, bool wanted, const ingest::IngestResult& result, const Geometry& geo) {
+void write_debug_outputs(OutputStage& stage, bool wanted, const ingest::IngestResult& result, const geometry::FittedMap& geo) {
     if (!wanted) {
         for (const char* name : {"ingest.geojson", "geometry.geojson", "roads.geojson"}) {
             stage.remove_on_commit(name);
@@ -92,7 +92,7 @@ private:
 
 // The whole network's profile straight into its files, while map.xodr (and
 // the debug outputs) are written on a second thread: both only read the map.
-Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                         const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
                         PhaseTimer& timer) {
     std::future<void> map_written = std::async(o.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
@@ -115,7 +115,7 @@ Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::Inge
 }
 
 // The profile made whole: along a route, or carried into map.xodr's userData.
-Profiled whole_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled whole_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                        const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
                        PhaseTimer& timer) {
     odd::OddProfile network = odd::tag_route(in, taxonomy);
@@ -144,7 +144,7 @@ Profiled whole_profile(OutputStage& stage, const Options& o, const ingest::Inges
 
 } // namespace
 
-Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                            const xodr::MapInput& map_input, const xodr::MapBuild& map, xodr::Revision revision,
                            PhaseTimer& timer) {
     // The tagger builds each batch's alignment indexes itself: the network's

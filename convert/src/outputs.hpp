@@ -3,13 +3,7 @@
 // (pipeline.cpp runs the phases before them).
 #include "railodd/convert/options.hpp"
 
-#include "railodd/geometry/cant.hpp"
-#include "railodd/geometry/crossings.hpp"
-#include "railodd/geometry/feature_attachment.hpp"
-#include "railodd/geometry/indexed_alignment.hpp"
-#include "railodd/geometry/profiles.hpp"
-#include "railodd/geometry/vertical_profile.hpp"
-#include "railodd/geometry/track_fit.hpp"
+#include "railodd/geometry/fitted_map.hpp"
 #include "railodd/ingest/osm_reader.hpp"
 #include "railodd/odd/profile.hpp"
 #include "railodd/odd/route.hpp"
@@ -27,20 +21,6 @@
 
 namespace railodd::convert {
 
-struct Geometry {
-    geometry::TrackGraph tracks;
-    geometry::FittedNetwork fitted_tracks;
-    std::vector<geometry::VerticalProfile> profiles;
-    std::vector<std::vector<geometry::CantStretch>> cants;
-    geometry::Attachment attachment;
-    geometry::Crossings crossings;
-    geometry::TrackGraph roads;
-    geometry::FittedNetwork fitted_roads;
-    // The fitted tracks indexed at 2 m: made to place the features, used by
-    // the map and report.json, dropped before the profile is tagged.
-    std::vector<geometry::IndexedAlignment> indexed;
-};
-
 // What the profile left for report.json and report.html.
 struct Profiled {
     // The whole profile; when it was streamed (`section` set), its head and
@@ -56,7 +36,7 @@ struct Profiled {
 // section, while map.xodr is written on a second thread; a route's
 // (--from/--to, --relation) or one carried into map.xodr (--odd-user-data)
 // is made whole first.
-Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, Geometry& geo,
+Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                            const xodr::MapInput& map_input, const xodr::MapBuild& map, xodr::Revision revision,
                            PhaseTimer& timer);
 

@@ -3,6 +3,7 @@
 #include "outputs.hpp"
 
 #include "railodd/geometry/dump.hpp"
+#include "railodd/geometry/profiles.hpp"
 #include "railodd/geometry/road_fit.hpp"
 #include "railodd/geometry/topology_report.hpp"
 #include "railodd/ingest/dump.hpp"
@@ -88,7 +89,7 @@ void require_rail_roads(const std::string& input, const xodr::MapBuild& map) {
 }
 
 // Crossings found on the graph; features placed on the fitted centrelines.
-void place_features(const ingest::IngestResult& r, Geometry& g, const Options& o) {
+void place_features(const ingest::IngestResult& r, geometry::FittedMap& g, const Options& o) {
     g.indexed.reserve(g.fitted_tracks.edges.size());
     for (const auto& e : g.fitted_tracks.edges) {
         g.indexed.emplace_back(e.alignment, 2.0);
@@ -118,9 +119,9 @@ geometry::FitOptions fit_options(const Options& o) {
 }
 
 // Track graph, railway-grade centrelines and profiles, road centrelines.
-Geometry fit_geometry(const ingest::IngestResult& r, const Options& o, PhaseTimer& timer) {
+geometry::FittedMap fit_geometry(const ingest::IngestResult& r, const Options& o, PhaseTimer& timer) {
     const std::vector<std::string>& dem_files = o.dem;
-    Geometry g;
+    geometry::FittedMap g;
     timer.start("track_graph");
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
     timer.start("fit_tracks");
@@ -182,7 +183,7 @@ void check_duplicate_nodes(const Options& o, const ingest::IngestResult& result)
 
 // report.json's sections of every stage, in pipeline order (the route's last,
 // when the profile follows one).
-nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const Geometry& geo,
+nlohmann::ordered_json stage_reports(const ingest::IngestResult& result, const geometry::FittedMap& geo,
                                      nlohmann::ordered_json geometry_report, const xodr::MapBuild& map,
                                      const xodr::MapInput& map_input, const odd::Route* route) {
     nlohmann::ordered_json report = make_report(result);
@@ -208,7 +209,7 @@ xodr::MapOptions map_options(const Options& o, const ingest::IngestResult& r) {
 }
 
 // report.json and (unless --no-report) report.html, staged beside the rest.
-void write_reports(OutputStage& stage, const Options& o, ingest::IngestResult& result, const Geometry& geo,
+void write_reports(OutputStage& stage, const Options& o, ingest::IngestResult& result, const geometry::FittedMap& geo,
                    nlohmann::ordered_json geometry_report, const xodr::MapBuild& map, const xodr::MapInput& map_input,
                    Profiled& profiled) {
     nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input,
@@ -234,7 +235,7 @@ Result run(const Options& o) {
     // Phase 2: track graph, railway-grade centrelines and profiles, road
     // centrelines, cant; then crossings, and features placed on the tracks.
     PhaseTimer timer;
-    Geometry geo = fit_geometry(result, o, timer);
+    geometry::FittedMap geo = fit_geometry(result, o, timer);
     timer.start("cant");
     geometry::CantOptions cant;
     cant.estimate = o.estimate_cant;
@@ -243,9 +244,7 @@ Result run(const Options& o) {
     place_features(result, geo, o);
     // Phase 3: the OpenDRIVE map.
     timer.start("opendrive");
-    const xodr::MapInput map_input{result,     geo.tracks,       geo.fitted_tracks, geo.profiles,
-                                   geo.cants,  geo.roads,        geo.fitted_roads,  geo.attachment,
-                                   geo.crossings, &geo.indexed};
+    const xodr::MapInput map_input{result, geo};
     const xodr::MapOptions mo = map_options(o, result);
     xodr::MapBuild map = xodr::build_map(map_input, mo);
     require_rail_roads(o.input, map);

@@ -30,22 +30,22 @@ void TagContext::end_batch() {
 
 void TagContext::for_each_alignment(
     const std::function<void(std::size_t, const geometry::IndexedAlignment&)>& f) const {
-    for (std::size_t e = 0; e < geo().fitted_tracks.edges.size(); ++e) {
-        if (const geometry::IndexedAlignment* prebuilt = geo().indexed_edge(e)) {
+    for (std::size_t e = 0; e < geo().geometry.fitted_tracks.edges.size(); ++e) {
+        if (const geometry::IndexedAlignment* prebuilt = geo().geometry.indexed_edge(e)) {
             f(e, *prebuilt);
         } else {
-            f(e, geometry::IndexedAlignment(geo().fitted_tracks.edges[e].alignment, 2.0));
+            f(e, geometry::IndexedAlignment(geo().geometry.fitted_tracks.edges[e].alignment, 2.0));
         }
     }
 }
 
 const geometry::IndexedAlignment& TagContext::alignment(std::size_t edge) {
-    if (const geometry::IndexedAlignment* prebuilt = geo().indexed_edge(edge)) {
+    if (const geometry::IndexedAlignment* prebuilt = geo().geometry.indexed_edge(edge)) {
         return *prebuilt;
     }
     auto& slot = alignments_[edge];
     if (!slot) {
-        slot = std::make_unique<geometry::IndexedAlignment>(geo().fitted_tracks.edges[edge].alignment, 2.0);
+        slot = std::make_unique<geometry::IndexedAlignment>(geo().geometry.fitted_tracks.edges[edge].alignment, 2.0);
     }
     return *slot;
 }
@@ -55,7 +55,7 @@ const std::vector<WayRange>& TagContext::ways(std::size_t edge) {
     if (it != ways_.end()) {
         return it->second;
     }
-    const auto& e = geo().tracks.edges[edge];
+    const auto& e = geo().geometry.tracks.edges[edge];
     const auto& ia = alignment(edge);
     std::vector<WayRange> out;
     for (const auto& span : e.ways) {

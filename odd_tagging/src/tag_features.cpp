@@ -73,14 +73,14 @@ std::vector<SwitchAt> switches_of(TagContext& ctx) {
             done.insert(node);
         }
     }
-    const auto& g = ctx.geo().tracks;
+    const auto& g = ctx.geo().geometry.tracks;
     for (const auto& v : g.vertices) {
         const std::string node = "node:" + std::to_string(v.node_id);
         if (v.kind != geometry::VertexKind::switch_ || done.count(node) || v.edges.empty()) {
             continue;
         }
         const std::size_t e = v.edges.front();
-        const auto& fe = ctx.geo().fitted_tracks.edges[e];
+        const auto& fe = ctx.geo().geometry.fitted_tracks.edges[e];
         const bool at_start = (fe.reversed ? g.edges[e].to : g.edges[e].from) == static_cast<std::size_t>(&v - g.vertices.data());
         out.push_back({e, at_start ? 0.0 : ctx.alignment(e).length(), v.node_id, node, ""});
     }
@@ -128,7 +128,7 @@ void tag_crossings(TagContext& ctx) {
         }
         return r;
     });
-    for (const auto& c : ctx.geo().crossings.road_rail) {
+    for (const auto& c : ctx.geo().geometry.crossings.road_rail) {
         if (c.grade_separated || !ctx.in_batch(c.edge)) {
             continue;
         }
@@ -162,7 +162,7 @@ void tag_crossings(TagContext& ctx) {
         ctx.tag(footpath ? "Scenery/Crossings/Footpath crossing" : "Scenery/Crossings/Level crossing", c.edge, s, s, a, ids,
                 "osm+derived");
     }
-    for (const auto& c : ctx.geo().crossings.tracks) {
+    for (const auto& c : ctx.geo().geometry.crossings.tracks) {
         if (c.grade_separated || !ctx.in_batch(c.edge_a)) {
             continue;
         }

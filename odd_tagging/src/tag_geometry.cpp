@@ -31,7 +31,7 @@ constexpr double max_vertical_radius_m = 30000.0;
 
 void tag_horizontal(TagContext& ctx) {
     for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
-        const geometry::Alignment& a = ctx.geo().fitted_tracks.edges[e].alignment;
+        const geometry::Alignment& a = ctx.geo().geometry.fitted_tracks.edges[e].alignment;
         double s = 0.0;
         for (const auto& p : a.primitives) {
             const double s1 = s + p.length;
@@ -160,7 +160,7 @@ double line_speed(TagContext& ctx, std::size_t e, double s0, double s1) {
 // a Cant element of 0 mm so that their deficiency is on the profile too.
 void tag_cant_deficiency(TagContext& ctx, std::size_t e, const std::vector<geometry::CantStretch>& cant,
                          std::vector<std::vector<TaggedAttribute>>& stretch_extra) {
-    const geometry::Alignment& a = ctx.geo().fitted_tracks.edges[e].alignment;
+    const geometry::Alignment& a = ctx.geo().geometry.fitted_tracks.edges[e].alignment;
     double s = 0.0;
     for (const auto& p : a.primitives) {
         const double s0 = s, s1 = s + p.length;
@@ -189,8 +189,8 @@ void tag_cant_deficiency(TagContext& ctx, std::size_t e, const std::vector<geome
 } // namespace
 
 void tag_vertical_and_cant(TagContext& ctx) {
-    const auto& profiles = ctx.geo().profiles;
-    const auto& cants = ctx.geo().cants;
+    const auto& profiles = ctx.geo().geometry.profiles;
+    const auto& cants = ctx.geo().geometry.cants;
     for (std::size_t e = ctx.first(); e < ctx.last(); ++e) {
         // Without elevation data on the track the profile is an assumption
         // (flat) or a guess between its neighbours (interpolated), not a

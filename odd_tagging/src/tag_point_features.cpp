@@ -36,7 +36,7 @@ std::vector<TaggedAttribute> signal_attributes(const ingest::Feature& f) {
 
 void tag_point_features(TagContext& ctx) {
     const auto& features = ctx.geo().ingest.features;
-    for (const auto& at : ctx.geo().attachment.attached) {
+    for (const auto& at : ctx.geo().geometry.attachment.attached) {
         if (!ctx.in_batch(at.edge)) {
             continue;
         }

@@ -37,9 +37,9 @@ std::map<Cell, std::vector<RoadSample>> road_grid(const TagContext& ctx, const A
         ways[w.id] = &w;
     }
     std::map<Cell, std::vector<RoadSample>> grid;
-    const auto& g = ctx.geo().roads;
+    const auto& g = ctx.geo().geometry.roads;
     for (std::size_t e = 0; e < g.edges.size(); ++e) {
-        const auto& a = ctx.geo().fitted_roads.edges[e].alignment;
+        const auto& a = ctx.geo().geometry.fitted_roads.edges[e].alignment;
         const double len = geometry::length(a);
         const auto& span = g.edges[e].ways.front();
         const auto w = ways.find(span.way_id);

@@ -31,9 +31,9 @@ std::string text_of(const AttributeValue& v) {
 // Where track e starts and ends: chainage runs along the alignment, which may
 // run against the graph edge's node order.
 TrackEnd track_end(const TaggerInput& input, std::size_t e, const geometry::IndexedAlignment& a) {
-    const auto& edge = input.map_input.tracks.edges[e];
-    const auto& v = input.map_input.tracks.vertices;
-    const bool against = input.map_input.fitted_tracks.edges[e].reversed;
+    const auto& edge = input.map_input.geometry.tracks.edges[e];
+    const auto& v = input.map_input.geometry.tracks.vertices;
+    const bool against = input.map_input.geometry.fitted_tracks.edges[e].reversed;
     const std::size_t from = against ? edge.to : edge.from, to = against ? edge.from : edge.to;
     return {e, v[from].node_id, v[to].node_id, a.evaluate(0.0).hdg, a.evaluate(a.length()).hdg};
 }
@@ -88,7 +88,7 @@ void tag_network(const TaggerInput& input, const Taxonomy& taxonomy, ProfileSink
     p = profile_head(input, taxonomy, ctx);
     sink.begin(p);
     SummaryBuilder summary(&taxonomy);
-    const std::size_t tracks = input.map_input.fitted_tracks.edges.size();
+    const std::size_t tracks = input.map_input.geometry.fitted_tracks.edges.size();
     for (std::size_t first = 0; first < tracks; first += tracks_per_batch) {
         ctx.set_batch(first, std::min(tracks, first + tracks_per_batch));
         // Scenery from the geometry, then from the ways' tags and the features;

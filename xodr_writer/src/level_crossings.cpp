@@ -159,11 +159,11 @@ std::optional<CrossingRoad> crossing_road(const MapBuild& build, std::int64_t wa
 }
 
 void add_level_crossings(FeatureContext& ctx) {
-    for (const auto& c : ctx.in.crossings.road_rail) {
+    for (const auto& c : ctx.in.geometry.crossings.road_rail) {
         if (c.grade_separated) {
             continue;
         }
-        const geometry::IndexedAlignment ia(ctx.in.fitted_tracks.edges[c.edge].alignment, 2.0);
+        const geometry::IndexedAlignment ia(ctx.in.geometry.fitted_tracks.edges[c.edge].alignment, 2.0);
         const auto loc = ctx.on_track(c.edge, ia.project(c.point.x, c.point.y).s);
         if (!loc) {
             continue; // the track was not written: listed in tracks_not_written

@@ -15,7 +15,7 @@ namespace {
 // curves between them, in the local frame.
 void set_bounds(Header& h, const MapInput& in) {
     double n = -std::numeric_limits<double>::infinity(), s = -n, e = n, w = -n;
-    for (const auto* g : {&in.tracks, &in.roads}) {
+    for (const auto* g : {&in.geometry.tracks, &in.geometry.roads}) {
         for (const auto& edge : g->edges) {
             for (const auto& node : edge.nodes) {
                 n = std::max(n, node.xy.y);
@@ -72,9 +72,10 @@ MapBuild build_map(const MapInput& in, const MapOptions& options) {
     b.map.header.geo_reference = in.ingest.projection.proj_string();
     set_bounds(b.map.header, in);
     // Tracks first (their ids are the smallest), then the corridor's roads.
-    b.rail = add_rail_network({in.tracks, in.fitted_tracks, in.profiles, in.cants, in.ingest.tracks, in.indexed}, options.rail,
+    const geometry::FittedMap& g = in.geometry;
+    b.rail = add_rail_network({g.tracks, g.fitted_tracks, g.profiles, g.cants, in.ingest.tracks, &g.indexed}, options.rail,
                               ids, b.map);
-    b.roads = add_road_network(in.roads, in.fitted_roads, in.ingest.roads, options.roads, ids, b.map);
+    b.roads = add_road_network(in.geometry.roads, in.geometry.fitted_roads, in.ingest.roads, options.roads, ids, b.map);
     // Railway features on the written roads.
     FeatureContext ctx{in, b, ids, options.revision};
     add_structures(ctx);
@@ -94,7 +95,7 @@ nlohmann::ordered_json map_report(const MapBuild& b, const MapInput& in) {
         switches += road.switches.size();
     }
     std::size_t switch_vertices = 0;
-    for (const auto& v : in.tracks.vertices) {
+    for (const auto& v : in.geometry.tracks.vertices) {
         switch_vertices += v.kind == geometry::VertexKind::switch_ ? 1 : 0;
     }
     r["roads"] = b.map.roads.size();
@@ -118,7 +119,7 @@ nlohmann::ordered_json map_report(const MapBuild& b, const MapInput& in) {
     r["level_crossings_without_road_side"] = no_road;
     nlohmann::ordered_json unwritten = nlohmann::ordered_json::array();
     for (const auto& u : b.rail.unwritten) {
-        const auto& e = in.tracks.edges[u.edge];
+        const auto& e = in.geometry.tracks.edges[u.edge];
         nlohmann::ordered_json ways = nlohmann::ordered_json::array();
         for (const auto& span : e.ways) {
             ways.push_back(span.way_id);
@@ -128,7 +129,7 @@ nlohmann::ordered_json map_report(const MapBuild& b, const MapInput& in) {
     r["tracks_not_written"] = unwritten;
     nlohmann::ordered_json unlinked = nlohmann::ordered_json::array();
     for (const auto& u : b.rail.unlinked) {
-        unlinked.push_back({{"node", in.tracks.vertices[u.vertex].node_id}, {"edge", u.edge}, {"reason", u.reason}});
+        unlinked.push_back({{"node", in.geometry.tracks.vertices[u.vertex].node_id}, {"edge", u.edge}, {"reason", u.reason}});
     }
     r["track_ends_not_linked"] = unlinked;
     nlohmann::ordered_json features = nlohmann::ordered_json::array();

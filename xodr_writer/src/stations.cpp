@@ -58,7 +58,7 @@ void add_platform_object(FeatureContext& ctx, const geometry::AttachedFeature& a
 void add_stations(FeatureContext& ctx) {
     const auto& features = ctx.in.ingest.features;
     std::vector<const geometry::AttachedFeature*> stations, platforms;
-    for (const auto& a : ctx.in.attachment.attached) {
+    for (const auto& a : ctx.in.geometry.attachment.attached) {
         const std::string& kind = features[a.feature].kind;
         if (ctx.build.rail.pieces[a.edge].empty()) {
             if (kind == "station" || kind == "halt" || kind == "platform") {

@@ -67,9 +67,9 @@ void add_structures(FeatureContext& ctx) {
     for (const auto& w : ctx.in.ingest.tracks) {
         ways[w.id] = &w;
     }
-    for (std::size_t e = 0; e < ctx.in.tracks.edges.size(); ++e) {
+    for (std::size_t e = 0; e < ctx.in.geometry.tracks.edges.size(); ++e) {
         const auto& pieces = ctx.build.rail.pieces[e];
-        for (const Span& sp : spans_of(ctx.in.tracks.edges[e], ctx.in.fitted_tracks.edges[e], ways)) {
+        for (const Span& sp : spans_of(ctx.in.geometry.tracks.edges[e], ctx.in.geometry.fitted_tracks.edges[e], ways)) {
             for (const RoadPiece& p : pieces) {
                 const double s0 = std::max(sp.s0, p.s0), s1 = std::min(sp.s1, p.s1);
                 if (s1 - s0 < 1e-3) {

@@ -77,7 +77,7 @@ Signal make_signal(const ingest::Feature& f, bool along) {
 
 void add_track_features(FeatureContext& ctx) {
     const auto& features = ctx.in.ingest.features;
-    for (const auto& a : ctx.in.attachment.attached) {
+    for (const auto& a : ctx.in.geometry.attachment.attached) {
         const ingest::Feature& f = features[a.feature];
         if (f.kind != "signal" && f.kind != "buffer_stop") {
             continue;
@@ -89,7 +89,7 @@ void add_track_features(FeatureContext& ctx) {
         }
         Road& road = ctx.build.map.roads[loc->road];
         if (f.kind == "signal") {
-            const bool along = way_runs_along(ctx.in.tracks.edges[a.edge], ctx.in.fitted_tracks.edges[a.edge].reversed, f.id);
+            const bool along = way_runs_along(ctx.in.geometry.tracks.edges[a.edge], ctx.in.geometry.fitted_tracks.edges[a.edge].reversed, f.id);
             Signal sg = make_signal(f, along);
             sg.id = ctx.ids.signal();
             sg.s = loc->s;

@@ -2,8 +2,7 @@
 // Assembles the whole OpenDRIVE map from the geometry stage's results: the
 // rail network, the corridor's roads, the railway features on them (signals,
 // tunnels, bridges, stations with platforms, level crossings) and the header.
-#include "railodd/geometry/crossings.hpp"
-#include "railodd/geometry/feature_attachment.hpp"
+#include "railodd/geometry/fitted_map.hpp"
 #include "railodd/xodr/rail_network.hpp"
 #include "railodd/xodr/road_network.hpp"
 
@@ -14,25 +13,10 @@
 
 namespace railodd::xodr {
 
+// What the map is built from: the ingest and the geometry stages' results.
 struct MapInput {
     const ingest::IngestResult& ingest;
-    const geometry::TrackGraph& tracks;
-    const geometry::FittedNetwork& fitted_tracks;
-    const std::vector<geometry::VerticalProfile>& profiles;
-    const std::vector<std::vector<geometry::CantStretch>>& cants;
-    const geometry::TrackGraph& roads;
-    const geometry::FittedNetwork& fitted_roads;
-    const geometry::Attachment& attachment;
-    const geometry::Crossings& crossings;
-    // fitted_tracks indexed at 2 m, one per edge, where the caller already
-    // made them (to place the features): the map builder and the tagger use
-    // them instead of indexing every track again.
-    const std::vector<geometry::IndexedAlignment>* indexed = nullptr;
-
-    // The edge's prebuilt index, or null where there is none.
-    const geometry::IndexedAlignment* indexed_edge(std::size_t edge) const {
-        return indexed && indexed->size() == fitted_tracks.edges.size() ? &(*indexed)[edge] : nullptr;
-    }
+    const geometry::FittedMap& geometry;
 };
 
 struct MapOptions {
