@@ -1,4 +1,5 @@
 #include "outputs.hpp"
+#include "sink_thread.hpp"
 
 #include "railodd/geometry/dump.hpp"
 #include "railodd/ingest/dump.hpp"
@@ -18,6 +19,30 @@ namespace {
 std::filesystem::path taxonomy_path(const std::string& option) {
     return option.empty() ? std::filesystem::path{RAILODD_DATA_DIR} / "odd" / "railway_odd.yaml"
                           : std::filesystem::path{option};
+}
+
+using TrackNodes = std::vector<std::vector<std::array<double, 2>>>;
+
+// The mapped track ways in the map's frame, one node list per way part.
+TrackNodes track_nodes(const ingest::IngestResult& result) {
+    TrackNodes lines;
+    for (const auto& way : result.tracks) {
+        for (const auto& part : way.parts) {
+            auto& line = lines.emplace_back();
+            for (const auto& n : part) {
+                line.push_back({n.xy.x, n.xy.y});
+            }
+        }
+    }
+    return lines;
+}
+
+report::ReportOptions page_options(OutputStage& stage, const std::string& outdir) {
+    report::ReportOptions ro;
+    ro.map_dir = stage.staged_path("map.xodr").parent_path();
+    ro.map_name = outdir;
+    ro.fallback_taxonomy = taxonomy_path({});
+    return ro;
 }
 
 // With --from/--to, the profile along the route between the two stations;
@@ -104,7 +129,16 @@ Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::Inge
         stage.write_with("odd_profile.geojson", [&](std::ostream& geojson) {
             stage.write_with("odd_profile.csv", [&](std::ostream& csv) {
                 odd::ProfileFiles files(json, geojson, csv, stage.scratch_path("odd_profile.rows"));
-                ProfileTee tee(files, p, o.no_report ? nullptr : &in.map.map);
+                // The files are written on a thread of their own; the page's
+                // section is fed here, so that what it keeps for the page
+                // lies in this thread's heap (fed on the writer's, it left
+                // Cologne's peak 8 MB higher).
+                std::optional<SinkThread> writer;
+                if (o.threads != 1) {
+                    writer.emplace(files);
+                }
+                ProfileTee tee(writer ? static_cast<odd::ProfileSink&>(*writer) : files, p,
+                               o.no_report ? nullptr : &in.map.map);
                 odd::tag_network(in, taxonomy, tee);
             });
         });
@@ -162,21 +196,9 @@ void write_page(OutputStage& stage, const std::string& outdir, Profiled& profile
                 const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result) {
     PhaseTimer timer;
     timer.start("report_html");
-    std::vector<std::vector<std::array<double, 2>>> track_nodes;
-    for (const auto& way : result.tracks) {
-        for (const auto& part : way.parts) {
-            auto& line = track_nodes.emplace_back();
-            for (const auto& n : part) {
-                line.push_back({n.xy.x, n.xy.y});
-            }
-        }
-    }
-    report::ReportOptions ro;
-    ro.map_dir = stage.staged_path("map.xodr").parent_path();
-    ro.map_name = outdir;
-    ro.fallback_taxonomy = taxonomy_path({});
+    const TrackNodes nodes = track_nodes(result);
     const report::PageData page =
-        report::page_data(ro, {&profiled.profile, &report, &map, &track_nodes, profiled.section.get()});
+        report::page_data(page_options(stage, outdir), {&profiled.profile, &report, &map, &nodes, profiled.section.get()});
     profiled.section.reset();
     stage.write_with("report.html", [&](std::ostream& out) { report::write_html(page, out); });
     timer.stop();

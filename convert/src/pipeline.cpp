@@ -27,6 +27,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Memory, all of the policy: the profile is streamed a batch of tracks at a
+// time and never held whole (outputs.cpp); the tracks' 2 m indexes go before
+// the tagging, which indexes each batch itself (profile_and_write); and the
+// worker threads of the fit and of the profile's writer leave their malloc
+// arenas' free pages resident, where this thread's later phases cannot reuse
+// them, so they are given back after each (Cologne: the 18 MB the fit's held).
+void release_thread_arenas() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+}
+
 ingest::Selection make_selection(const Options& o) {
     ingest::Selection sel;
     if (!o.bbox.empty()) {
@@ -126,12 +138,7 @@ geometry::FittedMap fit_geometry(const ingest::IngestResult& r, const Options& o
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
     timer.start("fit_tracks");
     g.fitted_tracks = geometry::fit_track_graph(g.tracks, fit_options(o));
-#if defined(__GLIBC__)
-    // The fit's worker threads leave their malloc arenas' free pages
-    // resident, where this thread's later phases cannot reuse them: given
-    // back, Cologne's peak falls by the 18 MB they held.
-    malloc_trim(0);
-#endif
+    release_thread_arenas();
     timer.start("vertical_profiles");
     std::optional<geometry::ElevationModel> dem;
     if (!dem_files.empty()) {
@@ -251,12 +258,14 @@ Result run(const Options& o) {
     // The tracks' part of report.json while their indexes exist, and before
     // the profile does: the two never take memory at the same time.
     timer.start("geometry_report");
-    nlohmann::ordered_json geometry_report = geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed);
+    nlohmann::ordered_json geometry_report =
+        geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed, o.threads != 1);
     // Phases 4 and 5: ODD tags on every stretch and point of track, and every
     // output staged, then moved into place together. The large ones are
     // streamed: no output is ever held whole in memory.
     OutputStage stage(o.outdir);
     Profiled profiled = profile_and_write(stage, o, result, geo, map_input, map, mo.revision, timer);
+    release_thread_arenas();
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
     write_reports(stage, o, result, geo, std::move(geometry_report), map, map_input, profiled);

@@ -5,6 +5,7 @@
 #include "railodd/util/json_text.hpp"
 
 #include <algorithm>
+#include <future>
 #include <cmath>
 #include <ostream>
 #include <sstream>
@@ -142,10 +143,13 @@ ordered_json design_entry(const FittedNetwork& net, const std::vector<IndexedAli
 } // namespace
 
 ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
-                            const std::vector<IndexedAlignment>* indexed) {
+                            const std::vector<IndexedAlignment>* indexed, bool two_threads) {
     Totals t;
     ordered_json tracks = ordered_json::array();
     const bool prebuilt = indexed && indexed->size() == net.edges.size();
+    // The design summary reads the fits only: beside the per-track figures.
+    std::future<ordered_json> design = std::async(two_threads ? std::launch::async : std::launch::deferred,
+                                                  [&] { return design_entry(net, prebuilt ? indexed : nullptr); });
     for (std::size_t i = 0; i < net.edges.size(); ++i) {
         const FittedEdge& f = net.edges[i];
         tracks.push_back(track_entry(graph.edges[f.edge], f, prebuilt ? &(*indexed)[i] : nullptr, t));
@@ -166,7 +170,7 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
                             {"node_distance_p95_m", round_to(quantile(t.d, 0.95), 1e-4)},
                             {"node_distance_max_m", round_to(quantile(t.d, 1.0), 1e-4)},
                             {"links", links_entry(net)},
-                            {"design", design_entry(net, prebuilt ? indexed : nullptr)}};
+                            {"design", design.get()}};
     if (!net.chain_noise_sigma_m.empty()) {
         summary["node_noise"] = noise_entry(net, std::move(t.d_over_noise));
     }

@@ -9,6 +9,7 @@
 #include "railodd/util/errors.hpp"
 
 #include <algorithm>
+#include <future>
 #include <set>
 
 namespace railodd::report::detail {
@@ -79,9 +80,28 @@ double menger(double ax, double ay, double bx, double by, double cx, double cy) 
     return d > 0 ? 2.0 * cross / d : 0.0;
 }
 
+// Every way's nodes on their nearest rail roads, for the residuals and the
+// curvature both: half the ways on a second thread (each query reads the
+// roads only, so no hit depends on the split).
+std::vector<std::vector<RoadHit>> nearest_hits(const std::vector<Way>& ways, const RoadData& roads) {
+    std::vector<std::vector<RoadHit>> hits(ways.size());
+    const auto run = [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t k = lo; k < hi; ++k) {
+            for (std::size_t i = 0; i < ways[k].x.size(); ++i) {
+                hits[k].push_back(roads.nearest_rail(ways[k].x[i], ways[k].y[i], far_m));
+            }
+        }
+    };
+    const std::size_t half = ways.size() / 2;
+    std::future<void> second = std::async(std::launch::async, run, half, ways.size());
+    run(0, half);
+    second.get();
+    return hits;
+}
+
 // Node curvature along one way, placed on the nearest rail road and signed
 // along the road's growing s.
-void way_curvature(const Way& w, const RoadData& roads, std::vector<double>& out) {
+void way_curvature(const Way& w, const std::vector<RoadHit>& hits, std::vector<double>& out) {
     std::vector<double> along(w.x.size(), 0.0);
     for (std::size_t i = 1; i < w.x.size(); ++i) {
         along[i] = along[i - 1] + std::hypot(w.x[i] - w.x[i - 1], w.y[i] - w.y[i - 1]);
@@ -93,7 +113,7 @@ void way_curvature(const Way& w, const RoadData& roads, std::vector<double>& out
         if (c >= w.x.size() || along[i] - along[a] < window_m) {
             continue;
         }
-        const RoadHit hit = roads.nearest_rail(w.x[i], w.y[i], far_m);
+        const RoadHit& hit = hits[i];
         if (!hit.found) {
             continue;
         }
@@ -118,7 +138,8 @@ double quantile(std::vector<double> v, double q) {
 }
 
 // Residuals of every distinct node; the overlay's points and the histogram.
-void residuals(const std::vector<Way>& ways, const RoadData& roads, const GeoFrame& frame, NodeFit& nf) {
+void residuals(const std::vector<Way>& ways, const std::vector<std::vector<RoadHit>>& hits, const GeoFrame& frame,
+               NodeFit& nf) {
     ojson& fit = nf.fit;
     auto& pts = nf.node_pts;
     auto& node_res = nf.node_res;
@@ -127,14 +148,15 @@ void residuals(const std::vector<Way>& ways, const RoadData& roads, const GeoFra
     std::vector<std::size_t> counts(max_bins, 0);
     long long plon = 0, plat = 0;
     std::size_t far = 0;
-    for (const auto& w : ways) {
+    for (std::size_t k = 0; k < ways.size(); ++k) {
+        const Way& w = ways[k];
         for (std::size_t i = 0; i < w.x.size(); ++i) {
             const LonLat ll = frame.to_lonlat(w.x[i], w.y[i]);
             const long long lon = std::llround(ll.lon * 1e6), lat = std::llround(ll.lat * 1e6);
             if (!seen.insert({lon, lat}).second) {
                 continue;
             }
-            const RoadHit hit = roads.nearest_rail(w.x[i], w.y[i], far_m);
+            const RoadHit& hit = hits[k][i];
             if (!hit.found) {
                 ++far;
                 continue;
@@ -159,8 +181,7 @@ void residuals(const std::vector<Way>& ways, const RoadData& roads, const GeoFra
 
 // report.json's per-track figures, flagged where the residuals are more than
 // the noise explains.
-void track_figures(const ojson& report_json, ojson& fit) {
-    const ojson geometry = report_json.value("geometry", ojson::object());
+void track_figures(const ojson& geometry, ojson& fit) {
     fit["noise"] = geometry.value("summary", ojson::object()).value("node_noise", ojson::object());
     fit["flag_rule"] = "p95 residual over 2.5 noise sigmas, or the largest over 5";
     Array tracks;
@@ -181,11 +202,11 @@ void track_figures(const ojson& report_json, ojson& fit) {
 
 } // namespace
 
-NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
+NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& geometry, const RoadData& roads,
                  const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes) {
     NodeFit nf;
     nf.fit = {{"available", false}};
-    track_figures(report_json, nf.fit);
+    track_figures(geometry, nf.fit);
     const auto file = map_dir / "ingest.geojson";
     if (!track_nodes && !std::filesystem::is_regular_file(file)) {
         nf.fit["reason"] = "ingest.geojson is not in " + map_dir.string() +
@@ -195,9 +216,10 @@ NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json,
     }
     const std::vector<Way> ways = track_nodes ? given_ways(*track_nodes) : track_ways(file, frame);
     nf.fit["available"] = true;
-    residuals(ways, roads, frame, nf);
-    for (const auto& w : ways) {
-        way_curvature(w, roads, nf.curvature);
+    const std::vector<std::vector<RoadHit>> hits = nearest_hits(ways, roads);
+    residuals(ways, hits, frame, nf);
+    for (std::size_t k = 0; k < ways.size(); ++k) {
+        way_curvature(ways[k], hits[k], nf.curvature);
     }
     return nf;
 }

@@ -2,6 +2,7 @@
 // The report's data builders, one per section of the page (internal).
 #include "json_text.hpp"
 
+#include "railodd/util/cell_grid.hpp"
 #include "railodd/odd/profile.hpp"
 #include "railodd/xodr_check/map_lines.hpp"
 
@@ -85,8 +86,7 @@ private:
     const GeoFrame& frame_;
     std::vector<Sampled> samples_;
     std::map<std::string, long> index_;
-    double cell_ = 50.0;
-    std::map<std::pair<long, long>, std::vector<std::pair<std::size_t, std::size_t>>> grid_; // cell -> (road, vertex)
+    util::CellGrid<std::pair<std::size_t, std::size_t>> grid_{50.0}; // (road, vertex) of the rail roads' samples
 };
 
 // The map convert holds, as the lines read_map_lines() gives from its file.
@@ -105,7 +105,8 @@ struct NodeFit {
     std::vector<long long> node_res; // cm
     std::vector<double> curvature;   // road, s, k triples
 };
-NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& report_json, const RoadData& roads,
+// geometry: report.json's "geometry" section (the tracks' figures).
+NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& geometry, const RoadData& roads,
                  const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes);
 
 // The fields the page reads of each JSON input, and the types they must have.

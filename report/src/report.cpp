@@ -175,7 +175,8 @@ PageData page_data(const ReportOptions& o, const Loaded& loaded) {
     own.reset();
     out.key("summary").value(profile.summary).key("chains").value(detail::chains_json(profile, tracks));
     out.key("tracks").value(tracks);
-    const detail::NodeFit nf = detail::node_fit(o.map_dir, report, roads, frame, loaded.track_nodes);
+    const detail::NodeFit nf =
+        detail::node_fit(o.map_dir, report.value("geometry", ojson::object()), roads, frame, loaded.track_nodes);
     out.key("node_curvature").numbers(nf.curvature).key("spec").value(spec_json(o, profile, roads));
     // "fit": its figures, then the node arrays.
     out.key("fit").open('{');

@@ -67,7 +67,7 @@ RoadData::RoadData(const xodr_check::MapLines& map, const GeoFrame& frame) : map
             smp.x.push_back(p.x);
             smp.y.push_back(p.y);
             if (road.rail) {
-                grid_[{std::lround(std::floor(p.x / cell_)), std::lround(std::floor(p.y / cell_))}].push_back({i, j});
+                grid_.add_point(p.x, p.y, {i, j});
             }
         }
     }
@@ -139,31 +139,24 @@ double segment_fraction(double ax, double ay, double bx, double by, double x, do
 RoadHit RoadData::nearest_rail(double x, double y, double max_m) const {
     RoadHit best;
     double best_d2 = max_m * max_m;
-    const long cx = std::lround(std::floor(x / cell_)), cy = std::lround(std::floor(y / cell_));
-    const long reach = static_cast<long>(std::ceil(max_m / cell_)) + 1; // a segment spans at most one cell more
-    for (long gx = cx - reach; gx <= cx + reach; ++gx) {
-        for (long gy = cy - reach; gy <= cy + reach; ++gy) {
-            const auto it = grid_.find({gx, gy});
-            if (it == grid_.end()) {
-                continue;
-            }
-            for (const auto& [road, j] : it->second) {
-                const auto& smp = samples_[road];
-                for (std::size_t k = j == 0 ? 0 : j - 1; k <= j && k + 1 < smp.x.size(); ++k) {
-                    const double f = segment_fraction(smp.x[k], smp.y[k], smp.x[k + 1], smp.y[k + 1], x, y);
-                    const double px = smp.x[k] + f * (smp.x[k + 1] - smp.x[k]);
-                    const double py = smp.y[k] + f * (smp.y[k + 1] - smp.y[k]);
-                    const double d2 = (px - x) * (px - x) + (py - y) * (py - y);
-                    if (d2 < best_d2 || (d2 == best_d2 && best.found && road < best.road)) {
-                        const double len = map_.roads[road].length;
-                        const double n1 = static_cast<double>(smp.x.size() - 1);
-                        best = {road, len * (static_cast<double>(k) + f) / n1, 0.0, 0.0, true};
-                        best_d2 = d2;
-                    }
-                }
+    // A segment spans at most one cell more than its samples.
+    const auto reach = static_cast<std::int64_t>(std::ceil(max_m / grid_.cell_size())) + 1;
+    grid_.near(x, y, reach, [&](const std::pair<std::size_t, std::size_t>& at) {
+        const auto [road, j] = at;
+        const auto& smp = samples_[road];
+        for (std::size_t k = j == 0 ? 0 : j - 1; k <= j && k + 1 < smp.x.size(); ++k) {
+            const double f = segment_fraction(smp.x[k], smp.y[k], smp.x[k + 1], smp.y[k + 1], x, y);
+            const double px = smp.x[k] + f * (smp.x[k + 1] - smp.x[k]);
+            const double py = smp.y[k] + f * (smp.y[k + 1] - smp.y[k]);
+            const double d2 = (px - x) * (px - x) + (py - y) * (py - y);
+            if (d2 < best_d2 || (d2 == best_d2 && best.found && road < best.road)) {
+                const double len = map_.roads[road].length;
+                const double n1 = static_cast<double>(smp.x.size() - 1);
+                best = {road, len * (static_cast<double>(k) + f) / n1, 0.0, 0.0, true};
+                best_d2 = d2;
             }
         }
-    }
+    });
     if (!best.found) {
         return best;
     }

@@ -16,8 +16,9 @@ namespace railodd::geometry {
 
 // `indexed`, where given: net's alignments indexed at 2 m, one per fitted
 // edge (convert made them to place the features), not indexed again here.
+// two_threads: the design summary on a second thread, beside the tracks' figures.
 nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
-                                      const std::vector<IndexedAlignment>* indexed = nullptr);
+                                      const std::vector<IndexedAlignment>* indexed = nullptr, bool two_threads = false);
 
 void write_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
                    const char* layer, std::ostream& out);
