@@ -1,10 +1,11 @@
 #include "parallel_chains.hpp"
 
+#include "railodd/util/cell_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
-#include <unordered_map>
 
 namespace railodd::geometry {
 
@@ -33,35 +34,24 @@ public:
 
     template <class F>
     void near(const Point& q, F&& visit) const {
-        const auto it = cells_.find(key(cell(q.x), cell(q.y)));
-        if (it != cells_.end()) {
-            for (const std::size_t s : it->second) {
+        if (const std::vector<std::size_t>* ids = cells_.at(cells_.cell_of(q.x), cells_.cell_of(q.y))) {
+            for (const std::size_t s : *ids) {
                 visit(segments_[s]);
             }
         }
     }
 
 private:
-    static long cell(double v) { return static_cast<long>(std::floor(v / cell_m)); }
-    static long long key(long x, long y) { return (static_cast<long long>(x) << 32) ^ static_cast<unsigned>(y); }
-
     void add(const Segment& s) {
         const std::size_t id = segments_.size();
         segments_.push_back(s);
-        const long x0 = cell(std::min(s.a.x, s.b.x) - max_offset_m), x1 = cell(std::max(s.a.x, s.b.x) + max_offset_m);
-        const long y0 = cell(std::min(s.a.y, s.b.y) - max_offset_m), y1 = cell(std::max(s.a.y, s.b.y) + max_offset_m);
-        if ((x1 - x0 + 1) * (y1 - y0 + 1) > 10000) {
-            return; // a segment kilometres long: no double track is drawn so
-        }
-        for (long x = x0; x <= x1; ++x) {
-            for (long y = y0; y <= y1; ++y) {
-                cells_[key(x, y)].push_back(id);
-            }
-        }
+        // A segment kilometres long is left out: no double track is drawn so.
+        cells_.add_box(std::min(s.a.x, s.b.x) - max_offset_m, std::min(s.a.y, s.b.y) - max_offset_m,
+                       std::max(s.a.x, s.b.x) + max_offset_m, std::max(s.a.y, s.b.y) + max_offset_m, id, 10000);
     }
 
     std::vector<Segment> segments_;
-    std::unordered_map<long long, std::vector<std::size_t>> cells_;
+    util::CellGrid<std::size_t> cells_{cell_m};
 };
 
 // Does node i of chain `pts` lie beside segment s, along it?

@@ -239,10 +239,14 @@ void check_text_coordinates(const std::filesystem::path& file) {
     try {
 // GCC 12 sees libosmium's File constructor compare its own just-built
 // file name and calls it uninitialised (a false positive inside the header).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
         const osmium::io::File f{file.string()};
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
         const osmium::io::file_format format = f.format();
         if (format == osmium::io::file_format::xml) {
             scan_file<XmlScan>(file, f.compression());

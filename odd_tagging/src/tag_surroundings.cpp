@@ -4,6 +4,8 @@
 // Parallel road elements (the road's OSM way ids with the track's).
 #include "tag_context.hpp"
 
+#include "railodd/util/cell_grid.hpp"
+
 #include <cmath>
 #include <limits>
 #include <map>
@@ -25,18 +27,14 @@ struct RoadSample {
     std::int64_t way;
 };
 
-using Cell = std::pair<long, long>;
+using Grid = util::CellGrid<RoadSample>;
 
-Cell cell_of(double x, double y) {
-    return {static_cast<long>(std::floor(x / cell_m)), static_cast<long>(std::floor(y / cell_m))};
-}
-
-std::map<Cell, std::vector<RoadSample>> road_grid(const TagContext& ctx, const Attribute* classes) {
+Grid road_grid(const TagContext& ctx, const Attribute* classes) {
     std::map<std::int64_t, const ingest::Way*> ways;
     for (const auto& w : ctx.geo().ingest.roads) {
         ways[w.id] = &w;
     }
-    std::map<Cell, std::vector<RoadSample>> grid;
+    Grid grid(cell_m);
     const auto& g = ctx.geo().geometry.roads;
     for (std::size_t e = 0; e < g.edges.size(); ++e) {
         const auto& a = ctx.geo().geometry.fitted_roads.edges[e].alignment;
@@ -47,31 +45,22 @@ std::map<Cell, std::vector<RoadSample>> road_grid(const TagContext& ctx, const A
         const std::string cls = classes && classes->has_value(highway) ? highway : "other";
         for (double s = 0.0; s <= len; s += sample_m) {
             const auto p = geometry::evaluate(a, s);
-            grid[cell_of(p.x, p.y)].push_back({p.x, p.y, p.hdg, cls, span.way_id});
+            grid.add_point(p.x, p.y, {p.x, p.y, p.hdg, cls, span.way_id});
         }
     }
     return grid;
 }
 
-const RoadSample* nearest(const std::map<Cell, std::vector<RoadSample>>& grid, const geometry::Pose& p, double& dist) {
+const RoadSample* nearest(const Grid& grid, const geometry::Pose& p, double& dist) {
     const RoadSample* best = nullptr;
     dist = std::numeric_limits<double>::infinity();
-    const Cell c = cell_of(p.x, p.y);
-    for (long dx = -1; dx <= 1; ++dx) {
-        for (long dy = -1; dy <= 1; ++dy) {
-            const auto it = grid.find({c.first + dx, c.second + dy});
-            if (it == grid.end()) {
-                continue;
-            }
-            for (const RoadSample& r : it->second) {
-                const double d = std::hypot(r.x - p.x, r.y - p.y);
-                if (d < dist && d <= reach_m && std::abs(std::sin(r.hdg - p.hdg)) <= max_skew) {
-                    dist = d;
-                    best = &r;
-                }
-            }
+    grid.near(p.x, p.y, 1, [&](const RoadSample& r) {
+        const double d = std::hypot(r.x - p.x, r.y - p.y);
+        if (d < dist && d <= reach_m && std::abs(std::sin(r.hdg - p.hdg)) <= max_skew) {
+            dist = d;
+            best = &r;
         }
-    }
+    });
     return best;
 }
 
@@ -82,7 +71,6 @@ void tag_surroundings(TagContext& ctx) {
     const Element* el = ctx.taxonomy().find(path);
     const Attribute* classes = ctx.taxonomy().attribute(*el, "road_class");
     const Attribute* distance = ctx.taxonomy().attribute(*el, "distance");
-    using Grid = std::map<Cell, std::vector<RoadSample>>;
     const Grid& grid = ctx.prepared<Grid>("surroundings", [&] { return road_grid(ctx, classes); });
     if (grid.empty()) {
         return;

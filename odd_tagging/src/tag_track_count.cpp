@@ -5,6 +5,8 @@
 // taxonomy's bins).
 #include "tag_context.hpp"
 
+#include "railodd/util/cell_grid.hpp"
+
 #include <cmath>
 #include <map>
 #include <set>
@@ -25,45 +27,30 @@ struct Sample {
     double x, y, hdg;
 };
 
-using Cell = std::pair<long, long>;
+using Grid = util::CellGrid<Sample>;
 
-Cell cell_of(double x, double y) {
-    return {static_cast<long>(std::floor(x / track_spacing_m)), static_cast<long>(std::floor(y / track_spacing_m))};
-}
-
-int neighbours(const std::map<Cell, std::vector<Sample>>& grid, std::size_t edge, const geometry::Pose& p) {
+int neighbours(const Grid& grid, std::size_t edge, const geometry::Pose& p) {
     std::set<std::size_t> found;
-    const Cell c = cell_of(p.x, p.y);
-    for (long dx = -1; dx <= 1; ++dx) {
-        for (long dy = -1; dy <= 1; ++dy) {
-            const auto it = grid.find({c.first + dx, c.second + dy});
-            if (it == grid.end()) {
-                continue;
-            }
-            for (const Sample& s : it->second) {
-                if (s.edge == edge || std::hypot(s.x - p.x, s.y - p.y) > track_spacing_m ||
-                    std::abs(std::sin(s.hdg - p.hdg)) > max_skew) {
-                    continue;
-                }
-                found.insert(s.edge);
-            }
+    grid.near(p.x, p.y, 1, [&](const Sample& s) {
+        if (s.edge != edge && std::hypot(s.x - p.x, s.y - p.y) <= track_spacing_m &&
+            std::abs(std::sin(s.hdg - p.hdg)) <= max_skew) {
+            found.insert(s.edge);
         }
-    }
+    });
     return static_cast<int>(found.size());
 }
 
 } // namespace
 
 void tag_track_count(TagContext& ctx) {
-    using Grid = std::map<Cell, std::vector<Sample>>;
     // Every track's samples, once for all batches: a batch's tracks count
     // their neighbours in any batch.
     const Grid& grid = ctx.prepared<Grid>("track_count", [&] {
-        Grid g;
+        Grid g(track_spacing_m);
         ctx.for_each_alignment([&](std::size_t e, const geometry::IndexedAlignment& ia) {
             for (double s = 0.0; s <= ia.length(); s += sample_m) {
                 const auto p = ia.evaluate(s);
-                g[cell_of(p.x, p.y)].push_back({e, p.x, p.y, p.hdg});
+                g.add_point(p.x, p.y, {e, p.x, p.y, p.hdg});
             }
         });
         return g;
