@@ -19,11 +19,9 @@ double point_segment_distance(XY p, XY a, XY b) {
 
 } // namespace
 
-SegmentGrid::SegmentGrid(double cell_size_m) : cell_(std::max(cell_size_m, 1.0)) {}
+SegmentGrid::SegmentGrid(double cell_size_m) : cell_(std::max(cell_size_m, 1.0)), cells_(cell_) {}
 
-std::int64_t SegmentGrid::cell(double v) const noexcept {
-    return static_cast<std::int64_t>(std::floor(v / cell_));
-}
+std::int64_t SegmentGrid::cell(double v) const noexcept { return cells_.cell_of(v); }
 
 void SegmentGrid::add_polyline(const std::vector<XY>& points) {
     for (std::size_t i = 1; i < points.size(); ++i) {
@@ -48,7 +46,7 @@ void SegmentGrid::register_cells(std::uint32_t index) {
     const double next_y = (static_cast<double>(cy + (step_y > 0 ? 1 : 0)) * cell_ - a.y);
     double t_x = dx != 0 ? next_x / dx : inf;
     double t_y = dy != 0 ? next_y / dy : inf;
-    cells_[key(cx, cy)].push_back(index);
+    cells_.add(cx, cy, index);
     const std::int64_t steps = std::abs(ex - cx) + std::abs(ey - cy);
     for (std::int64_t i = 0; i < steps; ++i) {
         if (t_x < t_y) {
@@ -58,16 +56,16 @@ void SegmentGrid::register_cells(std::uint32_t index) {
             cy += step_y;
             t_y += delta_y;
         }
-        cells_[key(cx, cy)].push_back(index);
+        cells_.add(cx, cy, index);
     }
 }
 
 bool SegmentGrid::cell_within(std::int64_t cx, std::int64_t cy, XY p, double max_distance) const {
-    const auto it = cells_.find(key(cx, cy));
-    if (it == cells_.end()) {
+    const std::vector<std::uint32_t>* ids = cells_.at(cx, cy);
+    if (!ids) {
         return false;
     }
-    for (std::uint32_t i : it->second) {
+    for (std::uint32_t i : *ids) {
         if (point_segment_distance(p, segments_[i].a, segments_[i].b) <= max_distance) {
             return true;
         }

@@ -2,9 +2,9 @@
 // Uniform grid over polyline segments in the local frame, answering "is this
 // point within d metres of a track?" for the road corridor and feature snapping.
 #include "railodd/ingest/projection.hpp"
+#include "railodd/util/cell_grid.hpp"
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace railodd::ingest {
@@ -23,14 +23,13 @@ private:
     struct Segment {
         XY a, b;
     };
-    static std::int64_t key(std::int64_t cx, std::int64_t cy) noexcept { return (cx << 32) ^ (cy & 0xffffffff); }
     std::int64_t cell(double v) const noexcept;
     void register_cells(std::uint32_t index);
     bool cell_within(std::int64_t cx, std::int64_t cy, XY p, double max_distance) const;
 
     double cell_;
     std::vector<Segment> segments_;
-    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
+    util::CellGrid<std::uint32_t> cells_;
 };
 
 } // namespace railodd::ingest

@@ -9,6 +9,8 @@
 // unmapped land is not assumed rural.
 #include "tag_context.hpp"
 
+#include "railodd/util/cell_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -77,14 +79,14 @@ public:
                 for (long cx = lo.first; cx <= hi.first; ++cx) {
                     for (long cy = lo.second; cy <= hi.second; ++cy) {
                         if (probed.contains({cx, cy})) {
-                            cells_[{cx, cy}].push_back(i);
+                            cells_.add(cx, cy, i);
                         }
                     }
                 }
             } else {
                 for (const Cell& c : probed) {
                     if (c.first >= lo.first && c.first <= hi.first && c.second >= lo.second && c.second <= hi.second) {
-                        cells_[c].push_back(i);
+                        cells_.add(c.first, c.second, i);
                     }
                 }
             }
@@ -92,11 +94,11 @@ public:
     }
 
     const ingest::LandUseArea* at(double x, double y) const {
-        const auto it = cells_.find(cell_of(x, y));
-        if (it == cells_.end()) {
+        const std::vector<std::size_t>* ids = cells_.at(cells_.cell_of(x), cells_.cell_of(y));
+        if (!ids) {
             return nullptr;
         }
-        for (const std::size_t i : it->second) {
+        for (const std::size_t i : *ids) {
             if (order_[i].box.holds(x, y) && inside(*order_[i].area, x, y)) {
                 return order_[i].area;
             }
@@ -110,7 +112,7 @@ private:
         Box box;
     };
     std::vector<Entry> order_;
-    std::map<Cell, std::vector<std::size_t>> cells_;
+    util::CellGrid<std::size_t> cells_{cell_m};
 };
 
 int probe_count(double length) { return std::max(1, static_cast<int>(std::ceil(length / probe_m))); }
