@@ -116,7 +116,8 @@ private:
 };
 
 // The whole network's profile straight into its files, while map.xodr (and
-// the debug outputs) are written on a second thread: both only read the map.
+// the debug outputs) are written on another thread: both only read the map.
+// With one thread (--threads 1) all of it runs in turn on this one.
 Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                         const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
                         PhaseTimer& timer) {
