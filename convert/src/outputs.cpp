@@ -10,6 +10,7 @@
 #include "railodd/xodr/xml_writer.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <future>
 
 namespace railodd::convert {
@@ -115,6 +116,31 @@ private:
     const xodr::Map* page_map_;
 };
 
+// odd_profile.json, .geojson and .csv, one writer for the three (ProfileFiles),
+// fed by `feed`: the whole network as it is tagged, or a whole profile.
+void write_profile_files(OutputStage& stage, const std::function<void(odd::ProfileSink&)>& feed) {
+    stage.write_with("odd_profile.json", [&](std::ostream& json) {
+        stage.write_with("odd_profile.geojson", [&](std::ostream& geojson) {
+            stage.write_with("odd_profile.csv", [&](std::ostream& csv) {
+                odd::ProfileFiles files(json, geojson, csv, stage.scratch_path("odd_profile.rows"));
+                feed(files);
+            });
+        });
+    });
+}
+
+// A whole profile through a sink as one batch (the head and tail: the
+// profile without its elements, which are not copied).
+void feed_whole(odd::OddProfile& profile, odd::ProfileSink& sink) {
+    std::deque<odd::TaggedElement> elements;
+    std::swap(elements, profile.elements);
+    const odd::OddProfile head = profile;
+    std::swap(elements, profile.elements);
+    sink.begin(head);
+    sink.add(profile.elements);
+    sink.end(head);
+}
+
 // The whole network's profile straight into its files, while map.xodr (and
 // the debug outputs) are written on another thread: both only read the map.
 // With one thread (--threads 1) all of it runs in turn on this one.
@@ -126,23 +152,16 @@ Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::Inge
         write_debug_outputs(stage, o.debug_outputs, r, geo);
     });
     Profiled p;
-    stage.write_with("odd_profile.json", [&](std::ostream& json) {
-        stage.write_with("odd_profile.geojson", [&](std::ostream& geojson) {
-            stage.write_with("odd_profile.csv", [&](std::ostream& csv) {
-                odd::ProfileFiles files(json, geojson, csv, stage.scratch_path("odd_profile.rows"));
-                // The files are written on a thread of their own; the page's
-                // section is fed here, so that what it keeps for the page
-                // lies in this thread's heap (fed on the writer's, it left
-                // Cologne's peak 8 MB higher).
-                std::optional<SinkThread> writer;
-                if (o.threads != 1) {
-                    writer.emplace(files);
-                }
-                ProfileTee tee(writer ? static_cast<odd::ProfileSink&>(*writer) : files, p,
-                               o.no_report ? nullptr : &in.map.map);
-                odd::tag_network(in, taxonomy, tee);
-            });
-        });
+    write_profile_files(stage, [&](odd::ProfileSink& files) {
+        // The files are written on a thread of their own; the page's section
+        // is fed here, so that what it keeps for the page lies in this
+        // thread's heap (fed on the writer's, it left Cologne's peak 8 MB higher).
+        std::optional<SinkThread> writer;
+        if (o.threads != 1) {
+            writer.emplace(files);
+        }
+        ProfileTee tee(writer ? static_cast<odd::ProfileSink&>(*writer) : files, p, o.no_report ? nullptr : &in.map.map);
+        odd::tag_network(in, taxonomy, tee);
     });
     timer.start("write_outputs");
     map_written.get();
@@ -162,13 +181,11 @@ Profiled whole_profile(OutputStage& stage, const Options& o, const ingest::Inges
     odd::OddProfile along;
     p.route = route_profile(o, r, geo, taxonomy, network, along);
     timer.start("write_outputs");
-    const odd::OddProfile& profile = p.route ? along : network;
-    // The profile's GeoJSON, JSON and CSV on a second thread, the rest on
-    // this one: each file has one writer, so no byte depends on the thread count.
+    odd::OddProfile& profile = p.route ? along : network;
+    // The profile's files on a second thread, the rest on this one: each file
+    // has one writer, so no byte depends on the thread count.
     std::future<void> profile_written = std::async(o.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
-        stage.write_with("odd_profile.geojson", [&](std::ostream& out) { odd::write_geojson(profile, out); });
-        stage.write_with("odd_profile.json", [&](std::ostream& out) { odd::write_json(profile, out); });
-        stage.write_with("odd_profile.csv", [&](std::ostream& out) { odd::write_csv(profile, out); });
+        write_profile_files(stage, [&](odd::ProfileSink& files) { feed_whole(profile, files); });
     });
     stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(in.map.map, revision, out, odd_user_data); });
     write_debug_outputs(stage, o.debug_outputs, r, geo);
