@@ -4,6 +4,7 @@
 // same bad values.
 #include "batch_routes.hpp"
 #include "option_table.hpp"
+#include "test_support.hpp"
 
 #include "railodd/convert/options.hpp"
 #include "railodd/util/errors.hpp"
@@ -84,10 +85,11 @@ std::string yaml_value(const OptionSpec& s) {
     return "\"" + v[0] + "\"";
 }
 
-// The route's convert argv as the batch gives it to `railodd convert`.
+// The route's convert argv as the batch gives it to `railodd convert`. The
+// routes file goes into this test's own folder: ctest runs the tests of this
+// file side by side.
 std::vector<std::string> batch_args(const std::string& key, const std::string& value) {
-    const fs::path dir = fs::temp_directory_path() / "railodd-options-test";
-    fs::create_directories(dir);
+    static const fs::path dir = test::scratch_dir();
     const fs::path file = dir / "routes.yaml";
     std::ofstream(file) << "routes:\n  - id: r\n    input: /tmp/in.osm\n    " << key << ": " << value << "\n";
     const cli::BatchFile b = cli::load_batch_file(file);
