@@ -3,9 +3,9 @@
 #include "railodd/ingest/ogr_reader.hpp"
 #include "railodd/ingest/selection.hpp"
 #include "railodd/util/errors.hpp"
+#include "railodd/util/value_checks.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <regex>
 
 namespace railodd::convert {
@@ -85,28 +85,6 @@ const std::vector<OptionSpec>& table() {
 
 std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
-std::string check_number(const OptionSpec& spec, const std::string& text) {
-    double v = 0.0;
-    std::size_t used = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        return quoted(text) + " is not a number";
-    }
-    if (used != text.size() || !std::isfinite(v)) {
-        return quoted(text) + " is not a finite number";
-    }
-    if (v < spec.lo || v > spec.hi) {
-        const auto show = [](double d) {
-            std::string s = std::to_string(d);
-            s.erase(s.find_last_not_of('0') + 1);
-            return s.back() == '.' ? s.substr(0, s.size() - 1) : s;
-        };
-        return quoted(text) + " is outside [" + show(spec.lo) + ", " + show(spec.hi) + "]";
-    }
-    return {};
-}
-
 std::string check_text(const OptionSpec& spec, const std::string& text) {
     if (!spec.choices.empty() && std::find(spec.choices.begin(), spec.choices.end(), text) == spec.choices.end()) {
         std::string list;
@@ -144,15 +122,13 @@ std::string check_value(const OptionSpec& spec, const std::string& text) {
     switch (spec.kind) {
     case OptionKind::path:
     case OptionKind::paths:
-        return text.empty() ? "the path is empty" : std::string{};
+        return util::check_non_empty_path(text);
     case OptionKind::text:
         return check_text(spec, text);
     case OptionKind::number:
-        return check_number(spec, text);
+        return util::check_finite_in(text, spec.lo, spec.hi);
     case OptionKind::count:
-        return text.empty() || text.find_first_not_of("0123456789") != std::string::npos
-                   ? quoted(text) + " is not a non-negative integer"
-                   : std::string{};
+        return util::check_non_negative_integer(text);
     case OptionKind::integer:
         return std::regex_match(text, std::regex{"-?[0-9]{1,18}"}) ? std::string{} : quoted(text) + " is not an integer";
     case OptionKind::bbox:

@@ -22,6 +22,9 @@ std::filesystem::path taxonomy_path(const std::string& option) {
                           : std::filesystem::path{option};
 }
 
+// A second thread's work runs beside this one's, or (--threads 1) when asked for.
+std::launch beside(const Options& o) { return o.threads != 1 ? std::launch::async : std::launch::deferred; }
+
 using TrackNodes = std::vector<std::vector<std::array<double, 2>>>;
 
 // The mapped track ways in the map's frame, one node list per way part.
@@ -147,7 +150,7 @@ void feed_whole(odd::OddProfile& profile, odd::ProfileSink& sink) {
 Profiled stream_profile(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                         const odd::TaggerInput& in, const odd::Taxonomy& taxonomy, xodr::Revision revision,
                         PhaseTimer& timer) {
-    std::future<void> map_written = std::async(o.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
+    std::future<void> map_written = std::async(beside(o), [&] {
         stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(in.map.map, revision, out, {}); });
         write_debug_outputs(stage, o.debug_outputs, r, geo);
     });
@@ -184,7 +187,7 @@ Profiled whole_profile(OutputStage& stage, const Options& o, const ingest::Inges
     odd::OddProfile& profile = p.route ? along : network;
     // The profile's files on a second thread, the rest on this one: each file
     // has one writer, so no byte depends on the thread count.
-    std::future<void> profile_written = std::async(o.threads != 1 ? std::launch::async : std::launch::deferred, [&] {
+    std::future<void> profile_written = std::async(beside(o), [&] {
         write_profile_files(stage, [&](odd::ProfileSink& files) { feed_whole(profile, files); });
     });
     stage.write_with("map.xodr", [&](std::ostream& out) { xodr::write_xodr(in.map.map, revision, out, odd_user_data); });

@@ -14,7 +14,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <regex>
 #include <set>
 
 #if defined(__GLIBC__)
@@ -132,7 +131,6 @@ geometry::FitOptions fit_options(const Options& o) {
 
 // Track graph, railway-grade centrelines and profiles, road centrelines.
 geometry::FittedMap fit_geometry(const ingest::IngestResult& r, const Options& o, PhaseTimer& timer) {
-    const std::vector<std::string>& dem_files = o.dem;
     geometry::FittedMap g;
     timer.start("track_graph");
     g.tracks = geometry::build_track_graph(r.tracks, r.features);
@@ -141,8 +139,8 @@ geometry::FittedMap fit_geometry(const ingest::IngestResult& r, const Options& o
     release_thread_arenas();
     timer.start("vertical_profiles");
     std::optional<geometry::ElevationModel> dem;
-    if (!dem_files.empty()) {
-        dem.emplace(std::vector<std::filesystem::path>(dem_files.begin(), dem_files.end()));
+    if (!o.dem.empty()) {
+        dem.emplace(std::vector<std::filesystem::path>(o.dem.begin(), o.dem.end()));
     }
     g.profiles = geometry::fit_profiles(g.tracks, g.fitted_tracks, r.tracks, r.projection, dem ? &*dem : nullptr);
     timer.start("fit_roads");

@@ -87,6 +87,7 @@ std::vector<std::vector<RoadHit>> nearest_hits(const std::vector<Way>& ways, con
     std::vector<std::vector<RoadHit>> hits(ways.size());
     const auto run = [&](std::size_t lo, std::size_t hi) {
         for (std::size_t k = lo; k < hi; ++k) {
+            hits[k].reserve(ways[k].x.size());
             for (std::size_t i = 0; i < ways[k].x.size(); ++i) {
                 hits[k].push_back(roads.nearest_rail(ways[k].x[i], ways[k].y[i], far_m));
             }

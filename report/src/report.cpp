@@ -175,8 +175,11 @@ PageData page_data(const ReportOptions& o, const Loaded& loaded) {
     own.reset();
     out.key("summary").value(profile.summary).key("chains").value(detail::chains_json(profile, tracks));
     out.key("tracks").value(tracks);
+    // The geometry section as it is (value() would copy it, at the page's peak).
+    static const ojson no_geometry = ojson::object();
+    const auto g = report.find("geometry");
     const detail::NodeFit nf =
-        detail::node_fit(o.map_dir, report.value("geometry", ojson::object()), roads, frame, loaded.track_nodes);
+        detail::node_fit(o.map_dir, g != report.end() ? *g : no_geometry, roads, frame, loaded.track_nodes);
     out.key("node_curvature").numbers(nf.curvature).key("spec").value(spec_json(o, profile, roads));
     // "fit": its figures, then the node arrays.
     out.key("fit").open('{');
