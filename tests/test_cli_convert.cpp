@@ -151,9 +151,11 @@ TEST(CliConvert, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
 }
 
 // A whole network's profile is tagged and written a batch of tracks at a
-// time (the page's elements too); with --odd-user-data it is made whole
-// first. Both give the same profile files, page and report.
-TEST(CliConvert, StreamedProfileIsTheWholeOne) {
+// time (the page's elements too); with --odd-user-data map.xodr collects
+// each element as a <userData> of its road as the batches pass. The profile
+// files, page and report are the same either way, and the map carries one
+// entry per element of the profile.
+TEST(CliConvert, OddUserDataLeavesTheProfileAsItIs) {
     const auto dir = scratch_dir();
     ASSERT_EQ(run_railodd("sample -o " + quoted(dir / "sample")).exit_code, 0);
     for (const char* variant : {"streamed", "whole"}) {
@@ -169,7 +171,13 @@ TEST(CliConvert, StreamedProfileIsTheWholeOne) {
         EXPECT_EQ(a, read_file(dir / "whole" / "out" / name)) << name;
     }
     EXPECT_EQ(read_file(dir / "streamed" / "out" / "map.xodr").find("code=\"odd\""), std::string::npos);
-    EXPECT_NE(read_file(dir / "whole" / "out" / "map.xodr").find("code=\"odd\""), std::string::npos);
+    const std::string map = read_file(dir / "whole" / "out" / "map.xodr");
+    std::size_t entries = 0;
+    for (auto at = map.find("code=\"odd\""); at != std::string::npos; at = map.find("code=\"odd\"", at + 1)) {
+        ++entries;
+    }
+    const auto profile = nlohmann::json::parse(read_file(dir / "whole" / "out" / "odd_profile.json"));
+    EXPECT_EQ(entries, profile.at("elements").size());
     EXPECT_FALSE(has_staging_leftovers(dir / "streamed" / "out"));
 }
 

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,27 +24,31 @@ namespace railodd::convert {
 
 // What the profile left for report.json and report.html.
 struct Profiled {
-    // The whole profile; when it was streamed (`section` set), its head and
-    // tail only: route, summary, track ends, unparsed.
-    odd::OddProfile profile;
+    odd::OddProfile profile; // its head and tail only: route, summary, track ends, unparsed
     std::optional<odd::Route> route; // --from/--to or --relation
-    std::unique_ptr<report::ProfileSection> section; // the page's elements, when streamed
+    std::unique_ptr<report::ProfileSection> section; // the page's elements (unless --no-report)
 };
 
 // Tags the network and stages odd_profile.*, map.xodr and the debug outputs
-// (phases odd_tagging and write_outputs). A whole network's profile is
-// tagged a batch of tracks at a time straight into its files and the page's
-// section, while map.xodr is written on a second thread; a route's
-// (--from/--to, --relation) or one carried into map.xodr (--odd-user-data)
-// is made whole first.
+// (phases odd_tagging and write_outputs), all fed as the network is tagged a
+// batch of tracks at a time (output_sinks.hpp); map.xodr and the debug files
+// are written beside the tagging. Along a route (--from/--to, --relation)
+// the network's profile is collected whole and the profile's outputs are
+// fed the route's, cut from it.
 Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::IngestResult& r, geometry::FittedMap& geo,
                            const xodr::MapInput& map_input, const xodr::MapBuild& map, xodr::Revision revision,
                            PhaseTimer& timer);
+
+// A second thread's work runs beside this one's, or (--threads 1) when asked for.
+std::launch beside(const Options& o);
+
+// The page's map, made from map.xodr's model as it is staged.
+std::unique_ptr<report::PageMap> page_map(OutputStage& stage, const xodr::Map& map);
 
 // report.html from the map, profile, report and mapped tracks in memory: the
 // page is staged and committed with the files it shows. Its time is the
 // phase report_html of result.timings.
 void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
-                const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result);
+                const nlohmann::ordered_json& report, const report::PageMap& map, ingest::IngestResult& result);
 
 } // namespace railodd::convert

@@ -56,6 +56,10 @@ IndexedAlignment::IndexedAlignment(Alignment alignment, double sample_step)
     build_tree();
 }
 
+IndexedAlignment IndexedAlignment::for_evaluation(Alignment alignment) {
+    return IndexedAlignment(std::move(alignment), std::numeric_limits<double>::max());
+}
+
 void IndexedAlignment::build_tree() {
     const std::size_t blocks = (samples_.size() + block_size - 1) / block_size;
     leaves_ = 1;

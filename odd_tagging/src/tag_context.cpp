@@ -34,7 +34,7 @@ void TagContext::for_each_alignment(
         if (const geometry::IndexedAlignment* prebuilt = geo().geometry.indexed_edge(e)) {
             f(e, *prebuilt);
         } else {
-            f(e, geometry::IndexedAlignment(geo().geometry.fitted_tracks.edges[e].alignment, 2.0));
+            f(e, geometry::IndexedAlignment::for_evaluation(geo().geometry.fitted_tracks.edges[e].alignment));
         }
     }
 }

@@ -51,7 +51,8 @@ public:
     const geometry::IndexedAlignment& alignment(std::size_t edge);
     // Every track's alignment in turn, for what a tagger prepares over the
     // whole network: each is made and dropped in turn unless prebuilt, so
-    // that the network's indexes are never all held at once.
+    // that the network's indexes are never all held at once, and made for
+    // length() and evaluate() only (IndexedAlignment::for_evaluation).
     void for_each_alignment(const std::function<void(std::size_t, const geometry::IndexedAlignment&)>& f) const;
     const std::vector<WayRange>& ways(std::size_t edge); // ascending s
     const ingest::Feature* feature_at_node(std::int64_t node_id) const;

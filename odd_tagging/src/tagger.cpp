@@ -59,23 +59,6 @@ OddProfile profile_head(const TaggerInput& input, const Taxonomy& taxonomy, cons
     return p;
 }
 
-// Collects the batches into one profile (tag_route).
-class WholeProfile : public ProfileSink {
-public:
-    explicit WholeProfile(OddProfile& out) : out_(out) {}
-    void begin(const OddProfile& head) override { out_ = head; }
-    void add(std::deque<TaggedElement>& batch) override {
-        std::move(batch.begin(), batch.end(), std::back_inserter(out_.elements));
-    }
-    void end(const OddProfile& tail) override {
-        out_.unparsed = tail.unparsed;
-        out_.summary = tail.summary;
-    }
-
-private:
-    OddProfile& out_;
-};
-
 } // namespace
 
 void tag_network(const TaggerInput& input, const Taxonomy& taxonomy, ProfileSink& sink,
@@ -116,6 +99,17 @@ void tag_network(const TaggerInput& input, const Taxonomy& taxonomy, ProfileSink
     sink.end(p);
 }
 
+void WholeProfile::begin(const OddProfile& head) { out_ = head; }
+
+void WholeProfile::add(std::deque<TaggedElement>& batch) {
+    std::move(batch.begin(), batch.end(), std::back_inserter(out_.elements));
+}
+
+void WholeProfile::end(const OddProfile& tail) {
+    out_.unparsed = tail.unparsed;
+    out_.summary = tail.summary;
+}
+
 OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy) {
     OddProfile p;
     WholeProfile whole(p);
@@ -140,30 +134,17 @@ std::string user_data_text(const TaggedElement& t) {
 
 } // namespace
 
-OddUserData::OddUserData(const OddProfile& profile) : profile_(profile) {
-    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        by_road_[profile.elements[i].road_id].push_back(i);
-    }
-}
+void OddUserData::add(const TaggedElement& element) { by_road_[element.road_id].push_back(user_data_text(element)); }
 
 std::vector<xodr::UserData> OddUserData::operator()(const xodr::Road& road) const {
     std::vector<xodr::UserData> out;
     const auto it = by_road_.find(road.id);
     if (it != by_road_.end()) {
-        for (std::size_t i : it->second) {
-            out.push_back({"odd", user_data_text(profile_.elements[i])});
+        for (const std::string& text : it->second) {
+            out.push_back({"odd", text});
         }
     }
     return out;
-}
-
-void add_odd_user_data(const OddProfile& profile, xodr::Map& map) {
-    const OddUserData odd(profile);
-    for (auto& r : map.roads) {
-        for (auto& u : odd(r)) {
-            r.user_data.push_back(std::move(u));
-        }
-    }
 }
 
 } // namespace railodd::odd

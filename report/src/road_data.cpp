@@ -62,6 +62,8 @@ RoadData::RoadData(const xodr_check::MapLines& map, const GeoFrame& frame) : map
         index_.emplace(road.id, static_cast<long>(i));
         const std::size_t n = sample_count(road.length);
         auto& smp = samples_[i];
+        smp.x.reserve(n);
+        smp.y.reserve(n);
         for (std::size_t j = 0; j < n; ++j) {
             const auto p = road.pose(road.length * static_cast<double>(j) / static_cast<double>(n - 1));
             smp.x.push_back(p.x);

@@ -224,15 +224,22 @@ fs::path OutputStage::scratch_path(std::string_view name) {
 }
 
 void OutputStage::write_with(std::string_view name, const std::function<void(std::ostream&)>& write) {
-    const fs::path path = staged_path(name);
-    std::ofstream out(path, std::ios::binary);
-    if (!out) {
-        throw OutputError(path.string(), "cannot open for writing");
+    StagedFile file(*this, name);
+    write(file.stream());
+    file.close();
+}
+
+StagedFile::StagedFile(OutputStage& stage, std::string_view name)
+    : path_(stage.staged_path(name)), out_(path_, std::ios::binary) {
+    if (!out_) {
+        throw OutputError(path_.string(), "cannot open for writing");
     }
-    write(out);
-    out.close();
-    if (!out) {
-        throw OutputError(path.string(), "write failed");
+}
+
+void StagedFile::close() {
+    out_.close();
+    if (!out_) {
+        throw OutputError(path_.string(), "write failed");
     }
 }
 

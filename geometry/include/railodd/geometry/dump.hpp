@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
+
 #include <ostream>
 #include <string>
 #include <vector>
@@ -16,9 +18,12 @@ namespace railodd::geometry {
 
 // `indexed`, where given: net's alignments indexed at 2 m, one per fitted
 // edge (convert made them to place the features), not indexed again here.
-// two_threads: the design summary on a second thread, beside the tracks' figures.
+// two_threads: the design summary on a second thread, beside the tracks'
+// figures, which take a third as long (Cologne); `meanwhile`, the caller's
+// own work, runs on the calling thread after them.
 nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
-                                      const std::vector<IndexedAlignment>* indexed = nullptr, bool two_threads = false);
+                                      const std::vector<IndexedAlignment>* indexed = nullptr, bool two_threads = false,
+                                      const std::function<void()>& meanwhile = {});
 
 void write_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
                    const char* layer, std::ostream& out);

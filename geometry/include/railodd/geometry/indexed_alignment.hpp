@@ -14,6 +14,11 @@ public:
     // distance of the queried points, or a search may settle in the wrong
     // basin; 2 m is ample for railway geometry.
     explicit IndexedAlignment(Alignment alignment, double sample_step = 2.0);
+    // For length() and evaluate() only, which it answers as the indexed one
+    // does: sampled at the primitives' joints alone, so that project() may
+    // settle in the wrong basin. A network's worth costs its primitives, not
+    // its length (the tagger's passes over every track).
+    static IndexedAlignment for_evaluation(Alignment alignment);
 
     const Alignment& alignment() const noexcept { return alignment_; }
     double length() const noexcept { return length_; }

@@ -31,21 +31,31 @@ void tag_network(const TaggerInput& input, const Taxonomy& taxonomy, ProfileSink
 // The same profile, whole.
 OddProfile tag_route(const TaggerInput& input, const Taxonomy& taxonomy);
 
-// The tags as <userData code="odd"> on the roads they belong to, one per
-// element: "ID s=START-END name=value ...".
-void add_odd_user_data(const OddProfile& profile, xodr::Map& map);
+// A sink that collects the batches into one profile (tag_route; convert
+// along a route, which is cut from the whole network's profile).
+class WholeProfile final : public ProfileSink {
+public:
+    explicit WholeProfile(OddProfile& out) : out_(out) {}
+    void begin(const OddProfile& head) override;
+    void add(std::deque<TaggedElement>& batch) override;
+    void end(const OddProfile& tail) override;
 
-// The same entries for one road at a time, made as the map is written
-// (xodr::write_xodr's extra user data): on a large network they are as many
-// as the elements, and need not be held twice.
+private:
+    OddProfile& out_;
+};
+
+// The tags as <userData code="odd"> on the roads they belong to, one per
+// element: "ID s=START-END name=value ...", in profile order. Fed element by
+// element as the profile is made; handed to xodr::write_xodr as its extra
+// user data, one road at a time. The entries' text only is kept, not the
+// elements.
 class OddUserData {
 public:
-    explicit OddUserData(const OddProfile& profile);
+    void add(const TaggedElement& element);
     std::vector<xodr::UserData> operator()(const xodr::Road& road) const;
 
 private:
-    const OddProfile& profile_;
-    std::map<std::string, std::vector<std::size_t>> by_road_; // element indices, in profile order
+    std::map<std::string, std::vector<std::string>> by_road_;
 };
 
 } // namespace railodd::odd

@@ -13,6 +13,7 @@
 // run killed mid-commit is rolled forward by the next run into the folder, so
 // the folder never stays a mix of two runs' files.
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iosfwd>
 #include <mutex>
@@ -65,6 +66,21 @@ private:
     int lock_fd_ = -1;
     bool committed_ = false;
     bool created_ = false; // OUTDIR did not exist: removed again, empty, if nothing is committed
+};
+
+// One staged output written over several calls (an output fed a batch at a
+// time): open from construction to close(), which throws OutputError naming
+// the file when a write failed. Not closed, it is never moved into place
+// unless the run commits, and then it holds what was written.
+class StagedFile {
+public:
+    StagedFile(OutputStage& stage, std::string_view name);
+    std::ostream& stream() { return out_; }
+    void close();
+
+private:
+    std::filesystem::path path_;
+    std::ofstream out_;
 };
 
 // For a command that reads `dir` (written by another command): a commit that a
