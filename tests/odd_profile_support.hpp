@@ -4,8 +4,39 @@
 // 10 permille gradient, an open and a full-barrier level crossing, a speed
 // limit and a station. Elements in profile order (track, chainage, path).
 #include "railodd/odd/profile.hpp"
+#include "railodd/odd/profile_files.hpp"
+
+#include <atomic>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include <unistd.h> // getpid: one scratch file per test process
 
 namespace railodd::test {
+
+// odd_profile.json, .geojson and .csv of a whole profile, as convert writes
+// them (odd::ProfileFiles, the one writer), fed as one batch.
+struct ProfileTexts {
+    std::string json, geojson, csv;
+};
+
+inline ProfileTexts profile_files_of(const odd::OddProfile& p) {
+    static std::atomic<int> n{0};
+    const auto scratch = std::filesystem::temp_directory_path() /
+                         ("railodd-profile-rows-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
+    std::ostringstream json, geojson, csv;
+    {
+        odd::ProfileFiles files(json, geojson, csv, scratch);
+        odd::OddProfile head = p;
+        head.elements.clear();
+        std::deque<odd::TaggedElement> batch = p.elements;
+        files.begin(head);
+        files.add(batch);
+        files.end(head);
+    }
+    return {json.str(), geojson.str(), csv.str()};
+}
 
 inline odd::TaggedElement tagged(std::string path, std::string id, std::vector<odd::TaggedAttribute> attrs,
                                  std::string road, double s0, double s1, double ch0, double ch1,

@@ -1,9 +1,8 @@
 // odd_profile.json, .geojson and .csv written a batch at a time
-// (ProfileFiles) are byte for byte those of the whole profile (write_json,
-// write_geojson, write_csv), on random profiles cut into random batches,
-// empty ones included; the scratch file goes at the end.
+// (ProfileFiles) are byte for byte those of the whole profile in one batch,
+// and odd_profile.json that of write_json, on random profiles cut into
+// random batches, empty ones included; the scratch file goes at the end.
 #include "railodd/odd/profile_files.hpp"
-#include "railodd/odd/profile_outputs.hpp"
 #include "railodd/odd/profile_summary.hpp"
 #include "railodd/util/errors.hpp"
 #include "odd_profile_support.hpp"
@@ -106,13 +105,13 @@ TEST(OddProfileFiles, BatchesGiveTheWholeProfilesFilesByteForByte) {
         elements += p.elements.size();
         const fs::path scratch = dir / "rows.tmp";
         const Files f = streamed(p, rng, scratch);
-        std::ostringstream json, geojson, csv;
+        std::ostringstream json;
         odd::write_json(p, json);
-        odd::write_geojson(p, geojson);
-        odd::write_csv(p, csv);
+        const ProfileTexts whole = profile_files_of(p);
         ASSERT_EQ(f.json, json.str()) << "round " << round;
-        ASSERT_EQ(f.geojson, geojson.str()) << "round " << round;
-        ASSERT_EQ(f.csv, csv.str()) << "round " << round;
+        ASSERT_EQ(f.json, whole.json) << "round " << round;
+        ASSERT_EQ(f.geojson, whole.geojson) << "round " << round;
+        ASSERT_EQ(f.csv, whole.csv) << "round " << round;
         EXPECT_FALSE(fs::exists(scratch)) << "round " << round;
         // And it reads back as the profile written.
         EXPECT_EQ(odd::to_json_text(odd::profile_from_json(nlohmann::ordered_json::parse(f.json))), f.json);

@@ -1,7 +1,6 @@
 // odd_profile.json / .geojson / .csv and the summary: round trip, geometry
 // types and lon/lat order, RFC 4180 quoting, km per class.
 #include "railodd/odd/profile.hpp"
-#include "railodd/odd/profile_outputs.hpp"
 #include "railodd/odd/profile_summary.hpp"
 #include "railodd/util/errors.hpp"
 
@@ -12,6 +11,13 @@
 
 using namespace railodd::odd;
 using namespace railodd::test;
+
+namespace {
+
+std::string to_geojson(const OddProfile& p) { return profile_files_of(p).geojson; }
+std::string to_csv(const OddProfile& p) { return profile_files_of(p).csv; }
+
+} // namespace
 
 namespace {
 

@@ -34,6 +34,17 @@ using namespace json_read;
 
 } // namespace
 
+void to_json(nlohmann::ordered_json& j, const MapPlace& p) {
+    j = {{"road_id", p.road_id},
+         {"s_start", p.s_start},
+         {"s_end", p.s_end},
+         {"track", p.track},
+         {"chainage_start", p.chainage_start},
+         {"chainage_end", p.chainage_end},
+         {"point", p.point},
+         {"osm_ids", p.osm_ids}};
+}
+
 const AttributeValue* TaggedElement::find(const std::string& attribute) const {
     for (const auto& a : attributes) {
         if (a.name == attribute) {

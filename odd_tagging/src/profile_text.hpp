@@ -1,7 +1,7 @@
 #pragma once
-// The profile files' pieces as text, shared by the writers of a whole
-// profile (write_json, write_geojson, write_csv) and of one made a batch at a
-// time (ProfileFiles): both give the same bytes.
+// The profile files' pieces as text, shared by ProfileFiles (the three files,
+// a batch at a time) and write_json (odd_profile.json of a whole profile):
+// both give the same bytes.
 #include "profile_elements.hpp"
 
 #include "railodd/odd/profile.hpp"

@@ -99,15 +99,8 @@ Judgement judge(const AttributeConstraint& c, const Attribute& attribute, const 
 
 SpecViolation violation_at(const TaggedElement& e) {
     SpecViolation v;
+    static_cast<MapPlace&>(v) = e;
     v.element = e.element;
-    v.road_id = e.road_id;
-    v.s_start = e.s_start;
-    v.s_end = e.s_end;
-    v.track = e.track;
-    v.chainage_start = e.chainage_start;
-    v.chainage_end = e.chainage_end;
-    v.point = e.point;
-    v.osm_ids = e.osm_ids;
     return v;
 }
 

@@ -64,14 +64,7 @@ ojson violation_json(const SpecViolation& v) {
     j["unit"] = v.unit;
     j["constraint"] = v.constraint;
     j["note"] = v.note;
-    j["road_id"] = v.road_id;
-    j["s_start"] = v.s_start;
-    j["s_end"] = v.s_end;
-    j["track"] = v.track;
-    j["chainage_start"] = v.chainage_start;
-    j["chainage_end"] = v.chainage_end;
-    j["point"] = v.point;
-    j["osm_ids"] = v.osm_ids;
+    j.update(ojson(static_cast<const MapPlace&>(v)));
     j["spec_line"] = v.spec_line;
     return j;
 }

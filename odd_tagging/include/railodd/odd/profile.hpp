@@ -40,10 +40,10 @@ struct TaggedAttribute {
     AttributeValue value;
 };
 
-struct TaggedElement {
-    std::string element;    // taxonomy path
-    std::string element_id; // taxonomy id
-    std::vector<TaggedAttribute> attributes;
+// Where something lies on the converted route: on map.xodr's road and s, on
+// the track (graph edge) and its chainage, and the OSM objects behind it. A
+// tagged element, and a spec check's verdict on one, are places.
+struct MapPlace {
     std::string road_id;
     double s_start = 0.0;
     double s_end = 0.0;
@@ -52,6 +52,16 @@ struct TaggedElement {
     double chainage_end = 0.0;
     bool point = false;
     std::vector<std::string> osm_ids;
+};
+
+// The place's keys, in this order: road_id, s_start, s_end, track,
+// chainage_start, chainage_end, point, osm_ids.
+void to_json(nlohmann::ordered_json& j, const MapPlace& place);
+
+struct TaggedElement : MapPlace {
+    std::string element;    // taxonomy path
+    std::string element_id; // taxonomy id
+    std::vector<TaggedAttribute> attributes;
     std::string source;
     std::vector<std::pair<double, double>> lonlat; // geometry for the GeoJSON: a point or the stretch sampled
     bool reversed = false; // s falls as chainage grows (a route running against the road); JSON key only when true

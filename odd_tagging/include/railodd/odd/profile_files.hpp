@@ -1,8 +1,22 @@
 #pragma once
 // odd_profile.json, .geojson and .csv written while the network is tagged
 // (a ProfileSink for tag_network): each batch's elements are printed and
-// dropped, so no profile is held whole. The files are byte for byte those
-// write_json, write_geojson and write_csv give for the whole profile.
+// dropped, so no profile is held whole. The one writer of the three files:
+// a whole profile goes in as one batch. odd_profile.json is byte for byte
+// what write_json gives for the whole profile.
+//
+// odd_profile.geojson: an RFC 7946 FeatureCollection in WGS84 lon/lat (7
+// decimals, about 1 cm), one feature per line: a Point for point elements, a
+// LineString for s-ranges, both from `lonlat` (a range with a single position
+// becomes a Point, none a null geometry). Properties: odd_element,
+// element_id, attributes (object), road_id, track, s_start, s_end,
+// chainage_start, chainage_end, osm_ids, source.
+//
+// odd_profile.csv: RFC 4180 with a header row and CRLF line ends:
+// odd_element, element_id, road_id, s_start, s_end, chainage_start,
+// chainage_end (metres, 3 decimals), track, point, attributes
+// ("name=value;name=value"), osm_ids (space separated), source. Fields
+// holding a comma, quote or line break are quoted.
 #include "railodd/odd/profile.hpp"
 
 #include <filesystem>

@@ -28,7 +28,8 @@
 
 namespace railodd::odd {
 
-struct SpecViolation {
+// A tagged element the spec rejects, at the element's place.
+struct SpecViolation : MapPlace {
     std::string element;      // the tagged element's path
     std::string spec_element; // the spec entry that rejects it ("" for unlisted)
     std::string attribute;    // "" when the element itself is outside
@@ -36,14 +37,6 @@ struct SpecViolation {
     std::string unit;         // the taxonomy's unit of the attribute
     std::string constraint;   // "radius >= 300 m", "not allowed", "not listed (unlisted_elements: outside)"
     std::string note;         // the spec entry's note
-    std::string road_id;
-    double s_start = 0.0;
-    double s_end = 0.0;
-    std::size_t track = 0;
-    double chainage_start = 0.0;
-    double chainage_end = 0.0;
-    bool point = false;
-    std::vector<std::string> osm_ids;
     int spec_line = 0; // line of the constraint (or the entry) in the spec file
 };
 

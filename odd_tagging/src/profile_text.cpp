@@ -1,6 +1,5 @@
-// odd_profile.geojson and odd_profile.csv (profile_outputs.hpp).
-#include "railodd/odd/profile_outputs.hpp"
-
+// The lines of odd_profile.geojson and odd_profile.csv (profile_text.hpp;
+// the formats are described in profile_files.hpp).
 #include "json_text.hpp"
 #include "profile_elements.hpp"
 #include "profile_text.hpp"
@@ -166,42 +165,6 @@ void profile_text::append_csv_row(std::string& row, std::string& field, const Ta
     row += ',';
     append_field(row, e.source);
     row += "\r\n";
-}
-
-// One feature per line: a whole route's profile stays a few MB, and diffs of
-// two runs read element by element.
-void write_geojson(const OddProfile& profile, std::ostream& out) {
-    out << profile_text::geojson_head;
-    std::string line;
-    for (std::size_t i = 0; i < profile.elements.size(); ++i) {
-        line.assign(i > 0 ? ",\n" : "");
-        profile_text::append_feature(line, profile.elements[i]);
-        out << line;
-    }
-    out << (profile.elements.empty() ? "" : "\n") << profile_text::geojson_tail;
-}
-
-std::string to_geojson(const OddProfile& profile) {
-    std::ostringstream out;
-    write_geojson(profile, out);
-    return std::move(out).str();
-}
-
-void write_csv(const OddProfile& profile, std::ostream& out) {
-    std::string row, field;
-    profile_text::append_csv_header(row);
-    out << row;
-    for (const auto& e : profile.elements) {
-        row.clear();
-        profile_text::append_csv_row(row, field, e);
-        out << row;
-    }
-}
-
-std::string to_csv(const OddProfile& profile) {
-    std::ostringstream out;
-    write_csv(profile, out);
-    return std::move(out).str();
 }
 
 } // namespace railodd::odd
