@@ -105,12 +105,8 @@ Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::I
 
 std::launch beside(const Options& o) { return o.threads != 1 ? std::launch::async : std::launch::deferred; }
 
-std::unique_ptr<report::PageMap> page_map(OutputStage& stage, const xodr::Map& map) {
-    return std::make_unique<report::PageMap>(map, stage.staged_path("map.xodr"));
-}
-
 void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
-                const nlohmann::ordered_json& report, const report::PageMap& map, ingest::IngestResult& result) {
+                const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result) {
     PhaseTimer timer;
     timer.start("report_html");
     const TrackNodes nodes = track_nodes(result);

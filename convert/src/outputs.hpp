@@ -42,13 +42,10 @@ Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::I
 // A second thread's work runs beside this one's, or (--threads 1) when asked for.
 std::launch beside(const Options& o);
 
-// The page's map, made from map.xodr's model as it is staged.
-std::unique_ptr<report::PageMap> page_map(OutputStage& stage, const xodr::Map& map);
-
 // report.html from the map, profile, report and mapped tracks in memory: the
 // page is staged and committed with the files it shows. Its time is the
 // phase report_html of result.timings.
 void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
-                const nlohmann::ordered_json& report, const report::PageMap& map, ingest::IngestResult& result);
+                const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result);
 
 } // namespace railodd::convert

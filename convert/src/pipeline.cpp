@@ -29,8 +29,8 @@ namespace {
 // Memory, the pipeline's policy (the outputs' is in output_sinks.hpp): the
 // profile is streamed a batch of tracks at a time and never held whole; the
 // tracks' 2 m indexes go before the tagging, which indexes each batch itself
-// (profile_and_write); and the worker threads of the fit, of the tracks'
-// report and of the profile's writer leave their malloc arenas' free pages
+// (profile_and_write); and the worker threads of the fit and of the
+// profile's writer leave their malloc arenas' free pages
 // resident, where this thread's later phases cannot reuse them, so they are
 // given back after each (Cologne: the 18 MB the fit's held).
 void release_thread_arenas() {
@@ -217,11 +217,11 @@ xodr::MapOptions map_options(const Options& o, const ingest::IngestResult& r) {
 // report.json and (unless --no-report) report.html, staged beside the rest.
 void write_reports(OutputStage& stage, const Options& o, ingest::IngestResult& result, const geometry::FittedMap& geo,
                    nlohmann::ordered_json geometry_report, const xodr::MapBuild& map, const xodr::MapInput& map_input,
-                   Profiled& profiled, const report::PageMap* page_map) {
+                   Profiled& profiled) {
     nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input,
                                                   profiled.route ? &*profiled.route : nullptr);
     if (!o.no_report) {
-        write_page(stage, o.outdir, profiled, report, *page_map, result);
+        write_page(stage, o.outdir, profiled, report, map.map, result);
     } else {
         stage.remove_on_commit("report.html"); // an earlier run's page shows another map
     }
@@ -257,17 +257,10 @@ Result run(const Options& o) {
     // Every output is staged, then moved into place together.
     OutputStage stage(o.outdir);
     // The tracks' part of report.json while their indexes exist, and before
-    // the profile does: the two never take memory at the same time. The
-    // page's map (unless --no-report) is made while its design summary is.
+    // the profile does: the two never take memory at the same time.
     timer.start("geometry_report");
-    std::unique_ptr<report::PageMap> page;
     nlohmann::ordered_json geometry_report =
-        geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed, o.threads != 1, [&] {
-            if (!o.no_report) {
-                page = page_map(stage, map.map);
-            }
-        });
-    release_thread_arenas();
+        geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed, o.threads != 1);
     // Phases 4 and 5: ODD tags on every stretch and point of track, and the
     // outputs. The large ones are streamed: no output is ever held whole in
     // memory.
@@ -275,7 +268,7 @@ Result run(const Options& o) {
     release_thread_arenas();
     timer.stop();
     result.timings.insert(result.timings.end(), timer.seconds().begin(), timer.seconds().end());
-    write_reports(stage, o, result, geo, std::move(geometry_report), map, map_input, profiled, page.get());
+    write_reports(stage, o, result, geo, std::move(geometry_report), map, map_input, profiled);
     Result out{result.source, result.selection, result.counts, ways_in_map(geo.tracks, map.rail), {}};
     out.written = stage.commit();
     return out;

@@ -143,8 +143,7 @@ ordered_json design_entry(const FittedNetwork& net, const std::vector<IndexedAli
 } // namespace
 
 ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
-                            const std::vector<IndexedAlignment>* indexed, bool two_threads,
-                            const std::function<void()>& meanwhile) {
+                            const std::vector<IndexedAlignment>* indexed, bool two_threads) {
     Totals t;
     ordered_json tracks = ordered_json::array();
     const bool prebuilt = indexed && indexed->size() == net.edges.size();
@@ -154,9 +153,6 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
     for (std::size_t i = 0; i < net.edges.size(); ++i) {
         const FittedEdge& f = net.edges[i];
         tracks.push_back(track_entry(graph.edges[f.edge], f, prebuilt ? &(*indexed)[i] : nullptr, t));
-    }
-    if (meanwhile) {
-        meanwhile();
     }
     std::sort(t.d.begin(), t.d.end());
     std::size_t switches = 0, crossings = 0;

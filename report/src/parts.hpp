@@ -2,8 +2,6 @@
 // The report's data builders, one per section of the page (internal).
 #include "json_text.hpp"
 
-#include "railodd/report/report.hpp"
-
 #include "railodd/util/cell_grid.hpp"
 #include "railodd/odd/profile.hpp"
 #include "railodd/xodr_check/map_lines.hpp"
@@ -93,21 +91,6 @@ private:
 
 // The map convert holds, as the lines read_map_lines() gives from its file.
 xodr_check::MapLines map_lines_of(const xodr::Map& map, const std::string& name);
-
-} // namespace railodd::report::detail
-
-namespace railodd::report {
-
-struct PageMap::State {
-    explicit State(xodr_check::MapLines lines);
-    xodr_check::MapLines map;
-    detail::GeoFrame frame;
-    detail::RoadData roads;
-};
-
-} // namespace railodd::report
-
-namespace railodd::report::detail {
 
 
 // The chart's chains: "all tracks end to end" and long chains joined at

@@ -138,16 +138,12 @@ std::string PageData::json() const {
 }
 
 PageData page_data(const ReportOptions& o, const Loaded& loaded) {
-    std::optional<PageMap> own_map; // map.xodr read, when the caller holds no map
-    if (!loaded.map) {
-        own_map.emplace(o.map_dir / "map.xodr");
-    }
-    const PageMap::State& m = (loaded.map ? *loaded.map : *own_map).state();
-    const xodr_check::MapLines& map = m.map;
-    const detail::GeoFrame& frame = m.frame;
-    const detail::RoadData& roads = m.roads;
+    const xodr_check::MapLines map = loaded.map ? detail::map_lines_of(*loaded.map, (o.map_dir / "map.xodr").string())
+                                                : xodr_check::read_map_lines(o.map_dir / "map.xodr");
     const odd::OddProfile& profile = *loaded.profile;
     const ojson& report = *loaded.report;
+    const detail::GeoFrame frame(map.geo_reference, map.file);
+    const detail::RoadData roads(map, frame);
     const fs::path play_file = play_file_of(o);
     const ojson meta = meta_json(o, profile, play_file);
 

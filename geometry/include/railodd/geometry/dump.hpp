@@ -8,8 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <functional>
-
 #include <ostream>
 #include <string>
 #include <vector>
@@ -18,12 +16,9 @@ namespace railodd::geometry {
 
 // `indexed`, where given: net's alignments indexed at 2 m, one per fitted
 // edge (convert made them to place the features), not indexed again here.
-// two_threads: the design summary on a second thread, beside the tracks'
-// figures, which take a third as long (Cologne); `meanwhile`, the caller's
-// own work, runs on the calling thread after them.
+// two_threads: the design summary on a second thread, beside the tracks' figures.
 nlohmann::ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
-                                      const std::vector<IndexedAlignment>* indexed = nullptr, bool two_threads = false,
-                                      const std::function<void()>& meanwhile = {});
+                                      const std::vector<IndexedAlignment>* indexed = nullptr, bool two_threads = false);
 
 void write_geojson(const TrackGraph& graph, const FittedNetwork& net, const ingest::LocalProjection& projection,
                    const char* layer, std::ostream& out);

@@ -68,25 +68,6 @@ private:
     std::unique_ptr<State> state_;
 };
 
-// The page's share of the map: its roads sampled in the page's frame, and the
-// index that places the mapped nodes on them. It needs
-// the map alone: convert makes it beside the tracks' part of report.json,
-// before the profile exists, and the page does not walk the map again.
-class PageMap {
-public:
-    // file: the map's path as errors and the page name it
-    PageMap(const xodr::Map& map, const std::filesystem::path& file);
-    explicit PageMap(const std::filesystem::path& map_xodr); // read from the file
-    PageMap(const PageMap&) = delete;
-    PageMap& operator=(const PageMap&) = delete;
-    ~PageMap();
-    struct State;
-    const State& state() const { return *state_; }
-
-private:
-    std::unique_ptr<State> state_;
-};
-
 // What a caller already holds (convert, before its outputs are in place):
 // used instead of reading odd_profile.json, report.json and map.xodr.
 struct Loaded {
@@ -94,7 +75,7 @@ struct Loaded {
     // track ends), the elements having gone into the section.
     const odd::OddProfile* profile = nullptr;
     const nlohmann::ordered_json* report = nullptr;
-    const PageMap* map = nullptr; // null: map.xodr is read
+    const xodr::Map* map = nullptr; // null: map.xodr is read
     // The mapped track ways in the map's frame, one node list (x, y) per way
     // part; null: ingest.geojson is read.
     const std::vector<std::vector<std::array<double, 2>>>* track_nodes = nullptr;
