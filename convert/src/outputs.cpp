@@ -57,8 +57,8 @@ void add_profile_outputs(Outputs& outputs, OutputStage& stage, const Options& o,
     outputs.push_back(std::make_unique<ProfileFilesOutput>(stage, o.threads != 1));
 }
 
-// A whole profile through outputs as one batch; the head and tail are the
-// profile without its elements, which are not copied.
+// A whole profile through outputs as one batch, its elements moved out (not
+// copied); the head and tail are the profile without them.
 void feed_whole(odd::OddProfile& profile, odd::ProfileSink& sink) {
     std::deque<odd::TaggedElement> elements;
     std::swap(elements, profile.elements);

@@ -30,9 +30,9 @@ namespace {
 // profile is streamed a batch of tracks at a time and never held whole; the
 // tracks' 2 m indexes go before the tagging, which indexes each batch itself
 // (profile_and_write); and the worker threads of the fit and of the
-// profile's writer leave their malloc arenas' free pages
-// resident, where this thread's later phases cannot reuse them, so they are
-// given back after each (Cologne: the 18 MB the fit's held).
+// profile's writer leave their malloc arenas' free pages resident, where
+// this thread's later phases cannot reuse them, so they are given back after
+// each (Cologne: the 18 MB the fit's held).
 void release_thread_arenas() {
 #if defined(__GLIBC__)
     malloc_trim(0);
@@ -254,16 +254,15 @@ Result run(const Options& o) {
     const xodr::MapOptions mo = map_options(o, result);
     xodr::MapBuild map = xodr::build_map(map_input, mo);
     require_rail_roads(o.input, map);
-    // Every output is staged, then moved into place together.
-    OutputStage stage(o.outdir);
     // The tracks' part of report.json while their indexes exist, and before
     // the profile does: the two never take memory at the same time.
     timer.start("geometry_report");
     nlohmann::ordered_json geometry_report =
         geometry::report_section(geo.tracks, geo.fitted_tracks, &geo.indexed, o.threads != 1);
-    // Phases 4 and 5: ODD tags on every stretch and point of track, and the
-    // outputs. The large ones are streamed: no output is ever held whole in
-    // memory.
+    // Phases 4 and 5: ODD tags on every stretch and point of track, and every
+    // output staged, then moved into place together. The large ones are
+    // streamed: no output is ever held whole in memory.
+    OutputStage stage(o.outdir);
     Profiled profiled = profile_and_write(stage, o, result, geo, map_input, map, mo.revision, timer);
     release_thread_arenas();
     timer.stop();
