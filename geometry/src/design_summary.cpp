@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <future>
 #include <numbers>
 #include <optional>
 #include <unordered_map>
@@ -133,19 +134,47 @@ std::size_t curvature_sign_changes(const IndexedAlignment& a) {
     return n;
 }
 
-DesignSummary summarise_design(const std::vector<Alignment>& alignments) {
+DesignSummary summarise_design(const std::vector<Alignment>& alignments, bool two_threads) {
     std::vector<IndexedAlignment> tracks;
     tracks.reserve(alignments.size());
     for (const Alignment& a : alignments) {
         tracks.emplace_back(a, 2.0);
     }
-    return summarise_design(tracks);
+    return summarise_design(tracks, two_threads);
 }
 
-DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks) {
+namespace {
+
+// The parallel curvature differences at samples [first, last) of `curved`.
+std::vector<double> parallel_differences(const std::vector<Sample>& curved, std::size_t first, std::size_t last,
+                                         const SampleGrid& grid, const std::vector<IndexedAlignment>& tracks) {
+    std::vector<double> diff;
+    for (std::size_t i = first; i < last; ++i) {
+        if (const auto d = parallel_difference(curved[i], grid, tracks)) {
+            diff.push_back(*d);
+        }
+    }
+    return diff;
+}
+
+} // namespace
+
+DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool two_threads) {
+    // Each half of the work beside the other: the sign changes beside the
+    // sample grid, the second half of the curved samples' neighbours beside
+    // the first. Each reads the tracks and the grid only, and the quantiles
+    // sort, so no figure depends on the split.
+    const std::launch beside = two_threads ? std::launch::async : std::launch::deferred;
+    std::future<std::size_t> sign_changes = std::async(beside, [&tracks] {
+        std::size_t n = 0;
+        for (const IndexedAlignment& t : tracks) {
+            n += curvature_sign_changes(t);
+        }
+        return n;
+    });
     DesignSummary out;
     double length_m = 0.0, spiral_m = 0.0, arc_m = 0.0;
-    std::size_t elements = 0, changes = 0;
+    std::size_t elements = 0;
     for (const IndexedAlignment& t : tracks) {
         for (const Primitive& p : t.alignment().primitives) {
             length_m += p.length;
@@ -153,16 +182,15 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks) {
             arc_m += p.kind == PrimitiveKind::arc ? p.length : 0.0;
         }
         elements += t.alignment().primitives.size();
-        changes += curvature_sign_changes(t);
     }
     if (length_m <= 0.0) {
+        sign_changes.wait();
         return out;
     }
     out.length_km = length_m / 1000.0;
     out.spiral_share = spiral_m / length_m;
     out.arc_share = arc_m / length_m;
     out.elements_per_km = static_cast<double>(elements) / out.length_km;
-    out.sign_changes_per_km = static_cast<double>(changes) / out.length_km;
     SampleGrid grid;
     std::vector<Sample> curved_samples;
     for (std::size_t t = 0; t < tracks.size(); ++t) {
@@ -175,12 +203,14 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks) {
         }
     }
     grid.seal();
-    std::vector<double> diff;
-    for (const Sample& q : curved_samples) {
-        if (const auto d = parallel_difference(q, grid, tracks)) {
-            diff.push_back(*d);
-        }
-    }
+    out.sign_changes_per_km = static_cast<double>(sign_changes.get()) / out.length_km;
+    const std::size_t half = curved_samples.size() / 2;
+    std::future<std::vector<double>> second = std::async(beside, [&] {
+        return parallel_differences(curved_samples, half, curved_samples.size(), grid, tracks);
+    });
+    std::vector<double> diff = parallel_differences(curved_samples, 0, half, grid, tracks);
+    const std::vector<double> rest = second.get();
+    diff.insert(diff.end(), rest.begin(), rest.end());
     out.parallel_pairs = diff.size();
     out.parallel_difference_p50 = quantile(diff, 0.5);
     out.parallel_difference_p95 = quantile(diff, 0.95);

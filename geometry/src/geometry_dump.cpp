@@ -118,17 +118,17 @@ ordered_json links_entry(const FittedNetwork& net) {
 
 // How much the network reads like a railway design (design_summary.hpp),
 // on the tracks' indexes where they are built already.
-ordered_json design_entry(const FittedNetwork& net, const std::vector<IndexedAlignment>* indexed) {
+ordered_json design_entry(const FittedNetwork& net, const std::vector<IndexedAlignment>* indexed, bool two_threads) {
     DesignSummary d;
     if (indexed) {
-        d = summarise_design(*indexed);
+        d = summarise_design(*indexed, two_threads);
     } else {
         std::vector<Alignment> alignments;
         alignments.reserve(net.edges.size());
         for (const FittedEdge& f : net.edges) {
             alignments.push_back(f.alignment);
         }
-        d = summarise_design(alignments);
+        d = summarise_design(alignments, two_threads);
     }
     return {{"spiral_share", round_to(d.spiral_share, 1e-4)},
             {"arc_share", round_to(d.arc_share, 1e-4)},
@@ -148,8 +148,9 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
     ordered_json tracks = ordered_json::array();
     const bool prebuilt = indexed && indexed->size() == net.edges.size();
     // The design summary reads the fits only: beside the per-track figures.
-    std::future<ordered_json> design = std::async(two_threads ? std::launch::async : std::launch::deferred,
-                                                  [&] { return design_entry(net, prebuilt ? indexed : nullptr); });
+    const std::launch beside = two_threads ? std::launch::async : std::launch::deferred;
+    std::future<ordered_json> design =
+        std::async(beside, [&] { return design_entry(net, prebuilt ? indexed : nullptr, two_threads); });
     for (std::size_t i = 0; i < net.edges.size(); ++i) {
         const FittedEdge& f = net.edges[i];
         tracks.push_back(track_entry(graph.edges[f.edge], f, prebuilt ? &(*indexed)[i] : nullptr, t));

@@ -29,13 +29,14 @@ struct DesignSummary {
     double parallel_share_over_10pct = 0.0;
 };
 
-DesignSummary summarise_design(const std::vector<Alignment>& alignments);
+// two_threads: half the work on a second thread (the figures do not depend on it).
+DesignSummary summarise_design(const std::vector<Alignment>& alignments, bool two_threads = false);
 
 // Curvature sign changes along one alignment: the sign of curvatures beyond
 // 1/20,000 m, sampled every 5 m, changing (straights between do not count
 // as a sign). Also the ground truth's count (synthetic/alignment_truth).
 std::size_t curvature_sign_changes(const IndexedAlignment& alignment);
 // The same on alignments already indexed (at 2 m).
-DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks);
+DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool two_threads = false);
 
 } // namespace railodd::geometry
