@@ -1,8 +1,8 @@
 #pragma once
-// A profile sink run on a thread of its own: the tagger hands each batch
-// over and tags the next while the files and the page's section take the
-// last (on Cologne the sinks were a third of the tagging phase's time, on
-// the tagging thread). Batches arrive in order and at most `depth` wait, so
+// A profile sink run on a thread of its own (the profile's files,
+// ProfileFilesOutput): the tagger hands each batch over and tags the next
+// while the files print the last (on Cologne they were a third of the
+// tagging phase's time, on the tagging thread). Batches arrive in order and at most `depth` wait, so
 // memory stays that of a few batches. end() returns once everything is
 // written; an exception from the sink comes back from the next add() or
 // from end().
