@@ -33,10 +33,11 @@ TrackNodes track_nodes(const ingest::IngestResult& result) {
     return lines;
 }
 
-report::ReportOptions page_options(OutputStage& stage, const std::string& outdir) {
+report::ReportOptions page_options(OutputStage& stage, const Options& o) {
     report::ReportOptions ro;
+    ro.one_thread = o.threads == 1;
     ro.map_dir = stage.staged_path("map.xodr").parent_path();
-    ro.map_name = outdir;
+    ro.map_name = o.outdir;
     ro.fallback_taxonomy = taxonomy_path({});
     return ro;
 }
@@ -105,13 +106,13 @@ Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::I
 
 std::launch beside(const Options& o) { return o.threads != 1 ? std::launch::async : std::launch::deferred; }
 
-void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
+void write_page(OutputStage& stage, const Options& o, Profiled& profiled,
                 const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result) {
     PhaseTimer timer;
     timer.start("report_html");
     const TrackNodes nodes = track_nodes(result);
     const report::PageData page =
-        report::page_data(page_options(stage, outdir), {&profiled.profile, &report, &map, &nodes, profiled.section.get()});
+        report::page_data(page_options(stage, o), {&profiled.profile, &report, &map, &nodes, profiled.section.get()});
     profiled.section.reset();
     stage.write_with("report.html", [&](std::ostream& out) { report::write_html(page, out); });
     timer.stop();

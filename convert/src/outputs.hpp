@@ -45,7 +45,7 @@ std::launch beside(const Options& o);
 // report.html from the map, profile, report and mapped tracks in memory: the
 // page is staged and committed with the files it shows. Its time is the
 // phase report_html of result.timings.
-void write_page(OutputStage& stage, const std::string& outdir, Profiled& profiled,
+void write_page(OutputStage& stage, const Options& o, Profiled& profiled,
                 const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result);
 
 } // namespace railodd::convert

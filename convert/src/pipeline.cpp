@@ -221,7 +221,7 @@ void write_reports(OutputStage& stage, const Options& o, ingest::IngestResult& r
     nlohmann::ordered_json report = stage_reports(result, geo, std::move(geometry_report), map, map_input,
                                                   profiled.route ? &*profiled.route : nullptr);
     if (!o.no_report) {
-        write_page(stage, o.outdir, profiled, report, map.map, result);
+        write_page(stage, o, profiled, report, map.map, result);
     } else {
         stage.remove_on_commit("report.html"); // an earlier run's page shows another map
     }

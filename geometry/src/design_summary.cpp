@@ -184,8 +184,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
         elements += t.alignment().primitives.size();
     }
     if (length_m <= 0.0) {
-        sign_changes.wait();
-        return out;
+        return out; // the sign changes are none (an async future joins as it goes)
     }
     out.length_km = length_m / 1000.0;
     out.spiral_share = spiral_m / length_m;

@@ -81,9 +81,9 @@ double menger(double ax, double ay, double bx, double by, double cx, double cy) 
 }
 
 // Every way's nodes on their nearest rail roads, for the residuals and the
-// curvature both: half the ways on a second thread (each query reads the
-// roads only, so no hit depends on the split).
-std::vector<std::vector<RoadHit>> nearest_hits(const std::vector<Way>& ways, const RoadData& roads) {
+// curvature both: half the ways on a second thread, or in turn (each query
+// reads the roads only, so no hit depends on the split).
+std::vector<std::vector<RoadHit>> nearest_hits(const std::vector<Way>& ways, const RoadData& roads, bool two_threads) {
     std::vector<std::vector<RoadHit>> hits(ways.size());
     const auto run = [&](std::size_t lo, std::size_t hi) {
         for (std::size_t k = lo; k < hi; ++k) {
@@ -94,7 +94,8 @@ std::vector<std::vector<RoadHit>> nearest_hits(const std::vector<Way>& ways, con
         }
     };
     const std::size_t half = ways.size() / 2;
-    std::future<void> second = std::async(std::launch::async, run, half, ways.size());
+    std::future<void> second =
+        std::async(two_threads ? std::launch::async : std::launch::deferred, run, half, ways.size());
     run(0, half);
     second.get();
     return hits;
@@ -204,7 +205,8 @@ void track_figures(const ojson& geometry, ojson& fit) {
 } // namespace
 
 NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& geometry, const RoadData& roads,
-                 const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes) {
+                 const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes,
+                 bool two_threads) {
     NodeFit nf;
     nf.fit = {{"available", false}};
     track_figures(geometry, nf.fit);
@@ -217,7 +219,7 @@ NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& geometry, co
     }
     const std::vector<Way> ways = track_nodes ? given_ways(*track_nodes) : track_ways(file, frame);
     nf.fit["available"] = true;
-    const std::vector<std::vector<RoadHit>> hits = nearest_hits(ways, roads);
+    const std::vector<std::vector<RoadHit>> hits = nearest_hits(ways, roads, two_threads);
     residuals(ways, hits, frame, nf);
     for (std::size_t k = 0; k < ways.size(); ++k) {
         way_curvature(ways[k], hits[k], nf.curvature);

@@ -105,9 +105,10 @@ struct NodeFit {
     std::vector<long long> node_res; // cm
     std::vector<double> curvature;   // road, s, k triples
 };
-// geometry: report.json's "geometry" section (the tracks' figures).
+// geometry: report.json's "geometry" section (the tracks' figures);
+// two_threads: half the nodes' nearest-road queries on a second thread.
 NodeFit node_fit(const std::filesystem::path& map_dir, const ojson& geometry, const RoadData& roads,
-                 const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes);
+                 const GeoFrame& frame, const std::vector<std::vector<std::array<double, 2>>>* track_nodes, bool two_threads);
 
 // The fields the page reads of each JSON input, and the types they must have.
 const std::vector<JsonField>& convert_report_shape();

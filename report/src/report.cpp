@@ -179,7 +179,7 @@ PageData page_data(const ReportOptions& o, const Loaded& loaded) {
     static const ojson no_geometry = ojson::object();
     const auto g = report.find("geometry");
     const detail::NodeFit nf =
-        detail::node_fit(o.map_dir, g != report.end() ? *g : no_geometry, roads, frame, loaded.track_nodes);
+        detail::node_fit(o.map_dir, g != report.end() ? *g : no_geometry, roads, frame, loaded.track_nodes, !o.one_thread);
     out.key("node_curvature").numbers(nf.curvature).key("spec").value(spec_json(o, profile, roads));
     // "fit": its figures, then the node arrays.
     out.key("fit").open('{');

@@ -38,6 +38,7 @@ struct ReportOptions {
     std::string tiles;                  // basemap URL template ({z}/{x}/{y}); empty: none
     std::string title;                  // empty: from the route
     std::string map_name;               // how the map folder is named in the page; empty: map_dir
+    bool one_thread = false;            // the node fit's second half in turn, not beside (convert --threads 1)
 };
 
 namespace detail {
