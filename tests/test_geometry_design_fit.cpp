@@ -265,7 +265,7 @@ TEST(DesignFit, ALeftOutNodeIsTakenBackWhereTheDesignThenFollowsIt) {
     }
 }
 
-// Two strays side by side (7.8 and 8.5 m off a curve of 1,556 m, OSM-like
+// Two strays side by side (7.8 and 8.5 m off a curve of R 1,556 m, OSM-like
 // nodes at 0.3 m) with a good node after them: the design bent to the pair,
 // the good node looked off it and was the one the node trials left out
 // (8.7 m off the centreline). The pair before the suspect is tried too.
