@@ -5,6 +5,7 @@
 #include "output_sinks.hpp"
 
 #include "railodd/odd/taxonomy.hpp"
+#include "railodd/util/beside.hpp"
 
 #include <filesystem>
 
@@ -104,7 +105,7 @@ Profiled profile_and_write(OutputStage& stage, const Options& o, const ingest::I
     return p;
 }
 
-std::launch beside(const Options& o) { return o.threads != 1 ? std::launch::async : std::launch::deferred; }
+std::launch beside(const Options& o) { return util::beside(o.threads != 1); }
 
 void write_page(OutputStage& stage, const Options& o, Profiled& profiled,
                 const nlohmann::ordered_json& report, const xodr::Map& map, ingest::IngestResult& result) {

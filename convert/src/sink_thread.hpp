@@ -2,10 +2,10 @@
 // A profile sink run on a thread of its own (the profile's files,
 // ProfileFilesOutput): the tagger hands each batch over and tags the next
 // while the files print the last (on Cologne they were a third of the
-// tagging phase's time, on the tagging thread). Batches arrive in order and at most `depth` wait, so
-// memory stays that of a few batches. end() returns once everything is
-// written; an exception from the sink comes back from the next add() or
-// from end().
+// tagging phase's time, on the tagging thread). Batches arrive in order and
+// at most `depth` wait, so memory stays that of a few batches. end()
+// returns once everything is written; an exception from the sink comes back
+// from the next add() or from end().
 #include "railodd/odd/profile.hpp"
 
 #include <condition_variable>

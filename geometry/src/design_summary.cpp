@@ -1,6 +1,7 @@
 #include "railodd/geometry/design_summary.hpp"
 
 #include "railodd/geometry/indexed_alignment.hpp"
+#include "railodd/util/beside.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -164,7 +165,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
     // sample grid, the second half of the curved samples' neighbours beside
     // the first. Each reads the tracks and the grid only, and the quantiles
     // sort, so no figure depends on the split.
-    const std::launch beside = two_threads ? std::launch::async : std::launch::deferred;
+    const std::launch beside = util::beside(two_threads);
     std::future<std::size_t> sign_changes = std::async(beside, [&tracks] {
         std::size_t n = 0;
         for (const IndexedAlignment& t : tracks) {

@@ -2,6 +2,7 @@
 
 #include "railodd/geometry/design_summary.hpp"
 
+#include "railodd/util/beside.hpp"
 #include "railodd/util/json_text.hpp"
 
 #include <algorithm>
@@ -148,9 +149,8 @@ ordered_json report_section(const TrackGraph& graph, const FittedNetwork& net,
     ordered_json tracks = ordered_json::array();
     const bool prebuilt = indexed && indexed->size() == net.edges.size();
     // The design summary reads the fits only: beside the per-track figures.
-    const std::launch beside = two_threads ? std::launch::async : std::launch::deferred;
     std::future<ordered_json> design =
-        std::async(beside, [&] { return design_entry(net, prebuilt ? indexed : nullptr, two_threads); });
+        std::async(util::beside(two_threads), [&] { return design_entry(net, prebuilt ? indexed : nullptr, two_threads); });
     for (std::size_t i = 0; i < net.edges.size(); ++i) {
         const FittedEdge& f = net.edges[i];
         tracks.push_back(track_entry(graph.edges[f.edge], f, prebuilt ? &(*indexed)[i] : nullptr, t));

@@ -9,6 +9,8 @@
 #include "railodd/util/errors.hpp"
 
 #include <algorithm>
+#include "railodd/util/beside.hpp"
+
 #include <future>
 #include <set>
 
@@ -94,8 +96,7 @@ std::vector<std::vector<RoadHit>> nearest_hits(const std::vector<Way>& ways, con
         }
     };
     const std::size_t half = ways.size() / 2;
-    std::future<void> second =
-        std::async(two_threads ? std::launch::async : std::launch::deferred, run, half, ways.size());
+    std::future<void> second = std::async(util::beside(two_threads), run, half, ways.size());
     run(0, half);
     second.get();
     return hits;
