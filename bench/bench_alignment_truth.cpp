@@ -2,15 +2,18 @@
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
 // [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing
-// osm|dense|sparse] [--method design|windowed] [--tied] (defaults: 300 routes from
+// osm|dense|sparse] [--method design|windowed] [--tied] [--chain] (defaults: 300 routes from
 // seed 1000, sigma 0.1 0.3 1.0, 1 % outliers, OSM-like node spacing
 // (alignment_truth.hpp), the design search (the default fit); --worst lists the
 // N worst routes and arcs; --bound
 // adds each arc's Cramer-Rao bound, design_crlb.hpp; --tied ties both
-// ends to the design's poses, as switches tie a chain). Prints, per sigma, the
+// ends to the design's poses, as switches tie a chain; --chain builds the
+// chain as the network's fit does, spliced, patched or by corners where the
+// fit misses nodes, and counts each). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
 // design arc, elements against the design and spurious curvature sign
 // changes: the figures issue 18's targets are stated in.
+#include "chain_fit.hpp"
 #include "design_crlb.hpp"
 
 #include "railodd/geometry/fit_alignment.hpp"
@@ -63,6 +66,7 @@ struct Options {
     truth::Spacing spacing = truth::Spacing::osm;
     geometry::FitMethod method = geometry::FitMethod::design_search;
     bool tied = false; // both ends tied to the design's pose there, as a chain between two switches is
+    bool chain = false; // as the network's fit builds a chain (fit_chain_points: splices, patches, corners)
 };
 
 // Issue 37's limit on a route's largest deviation from the true centreline:
@@ -77,6 +81,31 @@ double deviation_limit(double sigma, truth::Spacing spacing) {
 // The design's pose where a node's foot is: what a switch ties a chain's end to.
 geometry::Pose pose_at(const geometry::Alignment& design, const geometry::Point& node) {
     return geometry::evaluate(design, geometry::project_point(design, node.x, node.y).s);
+}
+
+// A route fitted as the options say, and how its chain was built (-1: the
+// fit alone).
+struct RouteFit {
+    geometry::Alignment alignment;
+    double noise_m = 0.0;
+    int method = -1;
+    std::size_t patched = 0;
+};
+
+RouteFit fit_route(const Options& opt, const truth::TruthRoute& r) {
+    geometry::FitOptions fo;
+    fo.method = opt.method;
+    std::optional<geometry::Pose> start, end;
+    if (opt.tied) {
+        start = pose_at(r.design, r.nodes.front());
+        end = pose_at(r.design, r.nodes.back());
+    }
+    if (opt.chain) {
+        geometry::ChainFit c = geometry::fit_chain_points(r.nodes, start, end, fo);
+        return {std::move(c.alignment), c.noise_sigma_m, static_cast<int>(c.method), c.patched_stretches};
+    }
+    geometry::FitResult f = geometry::fit_alignment(r.nodes, start, end, fo);
+    return {std::move(f.alignment), f.quality.noise_sigma_m, -1, 0};
 }
 
 // The arcs' Cramer-Rao bounds (relative sd of the curvature) against the
@@ -117,6 +146,8 @@ void run_sigma(const Options& opt, double sigma) {
     std::vector<double> p50, p95, dmax, radius, ratio, noise, bound, radius_bounded;
     std::vector<Worst> worst_routes, worst_arcs;
     long spurious = 0, routes_spurious = 0, over_1m = 0, over_limit = 0;
+    long methods[4] = {0, 0, 0, 0}; // routes per geometry::ChainMethod
+    std::size_t patched = 0;
     const double limit = deviation_limit(sigma, opt.spacing);
     double km = 0.0, seconds = 0.0;
     for (int i = 0; i < routes; ++i) {
@@ -127,17 +158,14 @@ void run_sigma(const Options& opt, double sigma) {
         const int seed = opt.first + i;
         const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), o);
         const auto t0 = std::chrono::steady_clock::now();
-        geometry::FitOptions fo;
-        fo.method = opt.method;
-        std::optional<geometry::Pose> start, end;
-        if (opt.tied) {
-            start = pose_at(r.design, r.nodes.front());
-            end = pose_at(r.design, r.nodes.back());
-        }
-        const geometry::FitResult fit = geometry::fit_alignment(r.nodes, start, end, fo);
+        const RouteFit fit = fit_route(opt, r);
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const truth::TruthScore s = truth::score(r, fit.alignment);
-        noise.push_back(fit.quality.noise_sigma_m / sigma);
+        noise.push_back(fit.noise_m / sigma);
+        if (fit.method >= 0) {
+            ++methods[fit.method];
+            patched += fit.patched;
+        }
         km += geometry::length(r.design) / 1000.0;
         p50.push_back(s.deviation_p50_m);
         p95.push_back(s.deviation_p95_m);
@@ -152,7 +180,7 @@ void run_sigma(const Options& opt, double sigma) {
                 radius_bounded.insert(radius_bounded.end(), s.radius_errors.begin(), s.radius_errors.end());
             }
         }
-        add_worst(seed, r, s, fit.quality.noise_sigma_m, worst_routes, worst_arcs);
+        add_worst(seed, r, s, fit.noise_m, worst_routes, worst_arcs);
         ratio.push_back(static_cast<double>(s.fit_elements) / static_cast<double>(s.design_elements));
         spurious += std::max(0L, s.spurious_sign_changes);
         routes_spurious += s.spurious_sign_changes > 0 ? 1 : 0;
@@ -175,6 +203,10 @@ void run_sigma(const Options& opt, double sigma) {
                 quantile(noise, 0.5), quantile(noise, 0.95));
     std::printf("  elements / design: median %.2f, p95 %.2f, max %.2f; spurious sign changes: %ld on %ld routes\n",
                 quantile(ratio, 0.5), quantile(ratio, 0.95), quantile(ratio, 1.0), spurious, routes_spurious);
+    if (opt.chain) {
+        std::printf("  chains: railway %ld, spliced %ld, patched %ld (%zu stretches), corners %ld\n", methods[0], methods[1],
+                    methods[2], patched, methods[3]);
+    }
     if (opt.bound) {
         print_bounds(bound, radius_bounded);
     }
@@ -202,6 +234,8 @@ int main(int argc, char** argv) {
             o.method = std::string(argv[++i]) == "design" ? geometry::FitMethod::design_search : geometry::FitMethod::windowed;
         } else if (a == "--tied") {
             o.tied = true;
+        } else if (a == "--chain") {
+            o.chain = true;
         } else if (a == "--bound") {
             o.bound = true;
         } else {

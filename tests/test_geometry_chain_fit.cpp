@@ -32,10 +32,12 @@ TEST(ChainFit, ANoisyChainBetweenSwitchesKeepsItsDesign) {
 }
 
 // A hairpin no railway design turns (6 m wide, the last six nodes coming
-// back), among nodes 2 cm off: corners. The design search's residual noise
-// estimate reads the hook as scatter (1.8 m); the nodes' scatter about their
-// neighbours does not, and that is what judges the miss.
-TEST(ChainFit, AHookAmongPreciseNodesIsBuiltByCorners) {
+// back), among nodes 2 cm off: the stretch round it is built by corners. The
+// design search's residual noise estimate reads the hook as scatter (1.8 m);
+// the nodes' scatter about their neighbours does not, and that is what
+// judges the miss. The straight before it is fitted again on its own: the
+// chain's fit, pulled by the hook, lay 1.8 m off its end.
+TEST(ChainFit, AHookAmongPreciseNodesIsPatchedByCorners) {
     std::vector<geometry::Point> p;
     for (int i = 0; i <= 20; ++i) {
         p.push_back({10.0 * i, 0.02 * ((i % 3) - 1)});
@@ -44,6 +46,33 @@ TEST(ChainFit, AHookAmongPreciseNodesIsBuiltByCorners) {
         p.push_back({200.0 - 10.0 * i, 6.0 + 0.02 * ((i % 3) - 1)});
     }
     const geometry::ChainFit f = geometry::fit_chain_points(p, std::nullopt, std::nullopt, design_search());
-    EXPECT_EQ(f.method, geometry::ChainMethod::corners) << f.noise_sigma_m;
-    EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 1.0);
+    EXPECT_EQ(f.method, geometry::ChainMethod::patched) << f.noise_sigma_m;
+    EXPECT_EQ(f.patched_stretches, 1u);
+    EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 0.3);
+    ASSERT_FALSE(f.alignment.primitives.empty());
+    EXPECT_EQ(f.alignment.primitives.front().kind, geometry::PrimitiveKind::line);
+    EXPECT_GT(f.alignment.primitives.front().length, 130.0);
+}
+
+// A jog in the mapping inside a long straight among nodes 2 cm off: the
+// nodes from the 31st on drawn 5 m aside (two ways joined where they do not
+// meet), which no railway design follows within 2 m of their noise over one
+// 10 m gap. The stretch round the jog is built by corners, and the nodes
+// either side keep a straight of their own: built by corners throughout,
+// the chain had a corner at every node.
+TEST(ChainFit, AJogInALongChainIsPatchedAndTheRestKeepsItsDesign) {
+    std::vector<geometry::Point> p;
+    for (int i = 0; i <= 60; ++i) {
+        p.push_back({10.0 * i, 0.02 * ((i % 3) - 1) + (i > 30 ? 5.0 : 0.0)});
+    }
+    const geometry::ChainFit f = geometry::fit_chain_points(p, std::nullopt, std::nullopt, design_search());
+    EXPECT_EQ(f.method, geometry::ChainMethod::patched);
+    EXPECT_EQ(f.patched_stretches, 1u);
+    EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 0.3);
+    ASSERT_NO_THROW(geometry::validate(f.alignment));
+    ASSERT_GE(f.alignment.primitives.size(), 3u);
+    for (const auto* e : {&f.alignment.primitives.front(), &f.alignment.primitives.back()}) {
+        EXPECT_EQ(e->kind, geometry::PrimitiveKind::line);
+        EXPECT_GT(e->length, 250.0);
+    }
 }

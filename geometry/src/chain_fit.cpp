@@ -1,6 +1,7 @@
 // Choosing how one chain is built; see chain_fit.hpp.
 #include "chain_fit.hpp"
 
+#include "stretch_patch.hpp"
 #include "tie_splice.hpp"
 
 #include <algorithm>
@@ -54,10 +55,13 @@ bool misses(const EndMiss& m) {
     return m.gap_m > max_gap_m || m.heading_rad > max_heading_rad || m.curvature > max_curvature;
 }
 
-// The fit with free ends, each tied end's stretch rebuilt by corners.
+// The fit with free ends, each tied end's stretch rebuilt by corners; the
+// free fit's strays in *strays.
 ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& o, const std::vector<IndexedAlignment>& guides) {
-    ChainFit f{fit_alignment(p, std::nullopt, std::nullopt, o, guides).alignment, ChainMethod::spliced, 0};
+                     const FitOptions& o, const std::vector<IndexedAlignment>& guides, std::vector<std::size_t>* strays) {
+    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
+    *strays = std::move(r.quality.strays);
+    ChainFit f{std::move(r.alignment), ChainMethod::spliced, 0};
     if (start) {
         f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options);
         ++f.spliced_ends;
@@ -69,29 +73,90 @@ ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& sta
     return f;
 }
 
+// A run fitted again on its own, with the chain's tie where it reaches a
+// tied end; kept where it follows its nodes as a chain's fit must (within
+// 2 m of what their noise explains) and loops nowhere.
+std::optional<Alignment> run_fit(const std::vector<Point>& run, const std::optional<Pose>& start,
+                                 const std::optional<Pose>& end, const FitOptions& o,
+                                 const std::vector<IndexedAlignment>& guides) {
+    const FitResult r = fit_alignment(run, start, end, o, guides);
+    if (loops_back(r.alignment, run) || r.quality.followed_max_m > fallback_deviation_m + noise_reach(run.size(), r.quality)) {
+        return std::nullopt;
+    }
+    return r.alignment;
+}
+
+// The chain cut round the nodes its fit passes beyond `limit`
+// (stretch_patch.hpp): corners across those stretches, the nodes between
+// fitted again. A chain that misses a few nodes keeps a design elsewhere:
+// built by corners throughout, one node 3 m off made a 554-node chain of
+// VDE 8.2 2,700 elements. Fitted again, not cut from the fit: the nodes it
+// missed pulled it aside (a hairpin at the end of a straight tilted the
+// straight 1.8 m among nodes 2 cm off).
+bool patch(ChainFit& f, const std::vector<Point>& p, const std::vector<std::size_t>& strays, double limit,
+           const std::optional<Pose>& start, const std::optional<Pose>& end, const FitOptions& o,
+           const std::vector<IndexedAlignment>& guides) {
+    constexpr std::size_t min_run = 4;
+    std::vector<char> skip(p.size(), 0);
+    for (const std::size_t i : strays) {
+        skip[i] = 1;
+    }
+    const auto stretches = missed_stretches(f.alignment, p, skip, limit, min_run);
+    const auto runs = runs_between(stretches, p.size());
+    if (stretches.empty() || runs.empty()) {
+        return false;
+    }
+    std::vector<Alignment> fits;
+    for (const auto& [a, b] : runs) {
+        const std::vector<Point> run(p.begin() + static_cast<long>(a), p.begin() + static_cast<long>(b) + 1);
+        std::optional<Alignment> r =
+            run_fit(run, a == 0 ? start : std::nullopt, b + 1 == p.size() ? end : std::nullopt, o, guides);
+        if (!r) {
+            return false;
+        }
+        fits.push_back(std::move(*r));
+    }
+    std::optional<Alignment> a = assemble_patched(p, stretches, fits, start, end, corner_options, limit);
+    if (!a || loops_back(*a, p)) {
+        return false;
+    }
+    f.alignment = std::move(*a);
+    f.method = ChainMethod::patched;
+    f.patched_stretches = stretches.size();
+    f.spliced_ends = 0; // the runs are fitted with the chain's ties; a tie they miss is spliced below
+    return true;
+}
+
 } // namespace
 
 ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>& start,
                           const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides) {
     const FitResult r = fit_alignment(p, start, end, o, guides);
     double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.followed_max_m;
-    ChainFit best{r.alignment, ChainMethod::railway, 0, r.quality.noise_sigma_m, r.quality.outliers};
+    ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m, r.quality.outliers};
+    std::vector<std::size_t> strays = r.quality.strays;
     const double reach = noise_reach(p.size(), r.quality);
     if ((start || end) && worst > retry_deviation_m + reach) {
-        ChainFit s = spliced_fit(p, start, end, o, guides);
+        std::vector<std::size_t> free_strays;
+        ChainFit s = spliced_fit(p, start, end, o, guides, &free_strays);
         s.noise_sigma_m = best.noise_sigma_m;
         s.outliers = best.outliers;
         const double m = loops_back(s.alignment, p) ? std::numeric_limits<double>::infinity() : measure_fit(s.alignment, p).max_m;
         if (m < worst) {
             best = std::move(s);
             worst = m;
+            strays = std::move(free_strays);
         }
     }
-    if (worst > fallback_deviation_m + reach) {
+    const double limit = fallback_deviation_m + reach;
+    if (worst > limit && std::isfinite(worst) && patch(best, p, strays, limit, start, end, o, guides)) {
+        worst = limit;
+    }
+    if (worst > limit) {
         // No railway-grade sequence came within reach of every mapped node
         // (tram corners, kinks): lines with clothoid corners keep every node
         // close and the ties exact.
-        return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0, best.noise_sigma_m, 0};
+        return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0, 0, best.noise_sigma_m, 0};
     }
     // The fit holds its end pose as a constraint, but a window whose every
     // model failed to meet it (least-squares fallback) may still miss, and
@@ -99,7 +164,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     // only its polish holds it exactly: Cologne, 4 of 3,465 branch starts
     // up to 1.2 m and 0.46 rad off, or at another curvature): then that
     // stretch is rebuilt from the fit's pose there to the tied pose.
-    if (best.method == ChainMethod::railway) {
+    if (best.method == ChainMethod::railway || best.method == ChainMethod::patched) {
         if (start && misses(start_miss(best.alignment, *start))) {
             best.alignment = splice_start(best.alignment, p, *start, splice_length_m, corner_options);
             ++best.spliced_ends;
@@ -108,7 +173,9 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
             best.alignment = splice_end(best.alignment, p, *end, splice_length_m, corner_options);
             ++best.spliced_ends;
         }
-        best.method = best.spliced_ends > 0 ? ChainMethod::spliced : ChainMethod::railway;
+        if (best.method == ChainMethod::railway && best.spliced_ends > 0) {
+            best.method = ChainMethod::spliced;
+        }
     }
     return best;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // One chain's centreline from its mapped nodes and tied end poses: the
 // railway fit where it follows the nodes, the corner construction where it
-// does not, and both spliced where only the stretches next to tied ends go
-// wrong. Whatever is chosen is G2 and meets the tied poses exactly.
+// does not, and both spliced where only some stretches go wrong (next to a
+// tied end, or round a few nodes). Whatever is chosen is G2 and meets the tied poses exactly.
 #include "railodd/geometry/fit_alignment.hpp"
 
 #include <cstddef>
@@ -14,6 +14,7 @@ namespace railodd::geometry {
 enum class ChainMethod {
     railway, // fit_alignment as it is
     spliced, // fit_alignment with the stretch next to a tied end rebuilt by corners
+    patched, // fit_alignment with the stretches round nodes it strays from rebuilt by corners
     corners, // the corner construction throughout
 };
 
@@ -21,6 +22,7 @@ struct ChainFit {
     Alignment alignment;
     ChainMethod method = ChainMethod::railway;
     std::size_t spliced_ends = 0;
+    std::size_t patched_stretches = 0;
     double noise_sigma_m = 0.0; // node scatter the railway fit assumed (FitQuality)
     std::size_t outliers = 0;   // nodes it left out as outliers
 };

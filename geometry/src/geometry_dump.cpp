@@ -110,6 +110,7 @@ ordered_json links_entry(const FittedNetwork& net) {
             {"degenerate_chains", net.degenerate_chains},
             {"corner_chains", net.corner_chains.size()},
             {"spliced_ends", net.spliced_ends},
+            {"patched_stretches", net.patched_stretches},
             {"reversed_chains", net.reversed_chains},
             {"reversing_links", net.reversing_links},
             {"max_gap_m", gap},

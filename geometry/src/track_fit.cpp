@@ -78,6 +78,7 @@ public:
         corner_chain_.assign(chains_.size(), 0);
         chain_degenerate_.assign(chains_.size(), 0);
         chain_spliced_.assign(chains_.size(), 0);
+        chain_patched_.assign(chains_.size(), 0);
         chain_noise_.assign(chains_.size(), 0.0);
         chain_outliers_.assign(chains_.size(), 0);
         guide_.resize(chains_.size());
@@ -115,6 +116,7 @@ public:
                 fallback_.push_back(c);
             }
             spliced_ += chain_spliced_[c];
+            patched_ += chain_patched_[c];
             degenerate_ += chain_degenerate_[c];
         }
         tie_cycles();
@@ -372,6 +374,7 @@ private:
             ChainFit fit = fit_chain_points(cg.points, start, end, o_, guides);
             corner_chain_[c] = fit.method == ChainMethod::corners ? 1 : 0;
             chain_spliced_[c] = fit.spliced_ends;
+            chain_patched_[c] = fit.patched_stretches;
             chain_noise_[c] = fit.noise_sigma_m;
             chain_outliers_[c] = fit.outliers;
             a = std::move(fit.alignment);
@@ -426,6 +429,7 @@ private:
         net.degenerate_chains = degenerate_;
         net.corner_chains = fallback_;
         net.spliced_ends = spliced_;
+        net.patched_stretches = patched_;
         net.chain_noise_sigma_m = chain_noise_;
         for (const std::size_t k : chain_outliers_) {
             net.outlier_nodes += k;
@@ -467,6 +471,7 @@ private:
     std::vector<char> corner_chain_;
     std::vector<char> chain_degenerate_;
     std::vector<std::size_t> chain_spliced_;
+    std::vector<std::size_t> chain_patched_;
     std::vector<double> chain_noise_;
     std::vector<std::size_t> chain_outliers_;
     std::vector<std::vector<std::size_t>> guide_; // the parallel chains each chain is guided by
@@ -474,6 +479,7 @@ private:
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;
     std::size_t spliced_ = 0;
+    std::size_t patched_ = 0;
     struct CycleEnd {
         std::size_t chain;
         std::size_t vertex;

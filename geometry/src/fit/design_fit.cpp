@@ -12,12 +12,21 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace railodd::geometry::fit {
 
 namespace {
 
 constexpr double reference_step_m = 2.0;
+// The scatter reported where too few nodes lie close together to tell it
+// (sparse chains): the fit's own residual scale, up to this. The truth
+// bench draws up to 2 m (its sparse routes at 2 m: 1.7-2.5 m estimated); a
+// sparse chain's residual scale beyond is its misfit's (Cologne way
+// 400045940: 10 m, nodes 15 m off at p95), and the chain's fit is judged
+// against how far noise takes a node (chain_fit.cpp). The scan's 0.3 m
+// prior there built half the sparse truth routes at 2 m by corners.
+constexpr double untold_scatter_max_m = 3.0;
 constexpr double smoothing_m = 30.0;
 // Calibrated on the truth bench (bench_alignment_truth --method design):
 // 1.2 ln n per parameter (routes beyond issue 37's deviation limits, 300 per
@@ -321,13 +330,17 @@ FitResult polish(const DesignPass& pass, const std::vector<Point2>& p, const std
 }
 
 // The first pass's noise and weights: the outlier scan's (outlier_nodes.hpp),
-// spikes left out, where enough nodes lie close together to tell a scale.
-double first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
+// spikes left out; none where too few nodes lie close together to tell a
+// scale.
+std::optional<double> first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
     const OutlierScan scan = find_outlier_nodes(p);
     for (std::size_t i = 0; i < p.size(); ++i) {
         weight[i] = scan.outlier[i] ? 0.0 : 1.0;
     }
-    return scan.tested < 12 ? 0.3 : std::clamp(scan.noise_sigma_m, 0.05, 5.0);
+    if (scan.tested < 12) {
+        return std::nullopt;
+    }
+    return std::clamp(scan.noise_sigma_m, 0.05, 5.0);
 }
 
 // Each node's distance to a pass's alignment on the map, not in the pass's
@@ -426,27 +439,37 @@ void constant_transitions_as_arcs(Alignment& a) {
 
 } // namespace
 
-double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
+std::vector<char> strays(const std::vector<double>& weight) {
     constexpr std::size_t stray_run = 2, witnesses = 2;
-    std::vector<std::size_t> kept_before(all.size() + 1, 0);
-    for (std::size_t i = 0; i < all.size(); ++i) {
+    std::vector<std::size_t> kept_before(weight.size() + 1, 0);
+    for (std::size_t i = 0; i < weight.size(); ++i) {
         kept_before[i + 1] = kept_before[i] + (weight[i] > 0.0 ? 1 : 0);
     }
-    std::vector<Point> judged;
-    for (std::size_t i = 0; i < all.size();) {
+    std::vector<char> out(weight.size(), 0);
+    for (std::size_t i = 0; i < weight.size();) {
         std::size_t j = i;
-        while (j < all.size() && weight[j] == 0.0) {
+        while (j < weight.size() && weight[j] == 0.0) {
             ++j;
         }
         if (j == i) {
-            judged.push_back(all[i++]);
+            ++i;
             continue;
         }
-        const bool stray = j - i <= stray_run && kept_before[i] >= witnesses && kept_before.back() - kept_before[j] >= witnesses;
-        if (!stray) {
-            judged.insert(judged.end(), all.begin() + static_cast<std::ptrdiff_t>(i), all.begin() + static_cast<std::ptrdiff_t>(j));
+        if (j - i <= stray_run && kept_before[i] >= witnesses && kept_before.back() - kept_before[j] >= witnesses) {
+            std::fill(out.begin() + static_cast<std::ptrdiff_t>(i), out.begin() + static_cast<std::ptrdiff_t>(j), 1);
         }
         i = j;
+    }
+    return out;
+}
+
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
+    const std::vector<char> stray = strays(weight);
+    std::vector<Point> judged;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (!stray[i]) {
+            judged.push_back(all[i]);
+        }
     }
     return measure_fit(a, judged).max_m;
 }
@@ -459,7 +482,9 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     const std::vector<Point2> p = at_ties(mapped, start, end);
     const bool fixed = options.noise_sigma_m > 0.0;
     std::vector<double> weight(p.size(), 1.0);
-    const double guess = first_guess(p, weight);
+    // Untold, the scale starts at 0.3 m and the residuals' own takes over.
+    const std::optional<double> scatter = first_guess(p, weight);
+    const double guess = scatter.value_or(0.3);
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
@@ -491,10 +516,16 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     FitResult r = polish(pass, p, all, weight, sigma, start, end);
     constant_transitions_as_arcs(r.alignment);
     r.quality.noise_sigma_m = sigma;
-    r.quality.scatter_sigma_m = guess;
+    r.quality.scatter_sigma_m = scatter.value_or(std::min(sigma, untold_scatter_max_m));
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));
     r.quality.followed_max_m = followed_max(r.alignment, followed, weight);
+    const std::vector<char> stray = strays(weight);
+    for (std::size_t i = 0; i < stray.size(); ++i) {
+        if (stray[i]) {
+            r.quality.strays.push_back(i);
+        }
+    }
     return r;
 }
 

@@ -46,5 +46,7 @@ void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 // cannot be told from the track (Cologne: the middle node of three on a
 // 676 m chain, tied at one end, left 17 m off). Those count.
 double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight);
+// Which left-out nodes are such strays (1), by weight alone.
+std::vector<char> strays(const std::vector<double>& weight);
 
 } // namespace railodd::geometry::fit

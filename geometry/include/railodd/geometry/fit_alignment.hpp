@@ -46,14 +46,15 @@ struct FitQuality {
     // The furthest node the fit follows: strays it left out do not count
     // (the windowed fit counts every node).
     double followed_max_m = 0.0;
+    std::vector<std::size_t> strays; // indices of those strays, ascending
     std::size_t windows = 0;
     std::size_t fallback_windows = 0; // windows kept as the fine clothoid spline (no design came near the nodes)
     std::size_t outliers = 0;         // mapped nodes left out of the fit as outliers
     double noise_sigma_m = 0.0;       // node scatter the fit assumed: estimated, or FitOptions' override
     // The nodes' scatter about their neighbours' line, which no misfit
-    // inflates (the design search's; its 0.3 m prior where under a dozen
-    // nodes tell it; 0 where not estimated): with noise_sigma_m, how far
-    // noise alone takes a node (chain_fit.cpp).
+    // inflates (the design search's; where under a dozen nodes tell it,
+    // noise_sigma_m up to 3 m; 0 where not estimated): with noise_sigma_m,
+    // how far noise alone takes a node (chain_fit.cpp).
     double scatter_sigma_m = 0.0;
 };
 

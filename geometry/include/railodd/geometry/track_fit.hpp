@@ -65,6 +65,10 @@ struct FittedNetwork {
     // meet it as a constraint), or followed the nodes better with that end
     // free (docs/geometry.md).
     std::size_t spliced_ends = 0;
+    // Stretches round a few nodes a railway fit strayed from (beyond what
+    // their noise explains, by 2 m) rebuilt by the corner construction, the
+    // rest of the chain's design kept (chain_fit.cpp).
+    std::size_t patched_stretches = 0;
     // Node scatter per chain (estimated from its nodes unless the options
     // gave one; 0 for degenerate chains) and the nodes left out as outliers.
     std::vector<double> chain_noise_sigma_m;

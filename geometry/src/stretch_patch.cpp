@@ -1,0 +1,133 @@
+// Cutting a chain's fit round the nodes it misses; see stretch_patch.hpp.
+#include "stretch_patch.hpp"
+
+#include "railodd/geometry/indexed_alignment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace railodd::geometry {
+
+namespace {
+
+// Each node's distance from the fit, searched near where the mapped
+// polyline puts it so that a chain passing itself cannot hand it to the
+// wrong pass.
+std::vector<double> node_distances(const Alignment& fit, const std::vector<Point>& p) {
+    std::vector<double> t(p.size(), 0.0);
+    for (std::size_t i = 1; i < p.size(); ++i) {
+        t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
+    }
+    const IndexedAlignment ia(fit, 2.0);
+    const double scale = t.back() > 0.0 ? ia.length() / t.back() : 0.0;
+    std::vector<double> d(p.size());
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        d[k] = ia.project_within(p[k].x, p[k].y, t[k] * scale - 100.0, t[k] * scale + 100.0).distance;
+    }
+    return d;
+}
+
+// The furthest the piece passes from the polyline through `nodes` (its
+// first and last point where the piece starts and ends), every 2 m.
+double off_polyline(const Alignment& piece, std::vector<Point> nodes) {
+    const Pose a = evaluate(piece, 0.0), b = evaluate(piece, length(piece));
+    nodes.front() = {a.x, a.y};
+    nodes.back() = {b.x, b.y};
+    double worst = 0.0;
+    const double len = length(piece);
+    for (double s = 0.0; s <= len + 1.0; s += 2.0) {
+        const Pose q = evaluate(piece, std::min(s, len));
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+            const double dx = nodes[i + 1].x - nodes[i].x, dy = nodes[i + 1].y - nodes[i].y;
+            const double l2 = dx * dx + dy * dy;
+            const double u = l2 > 0.0 ? std::clamp(((q.x - nodes[i].x) * dx + (q.y - nodes[i].y) * dy) / l2, 0.0, 1.0) : 0.0;
+            best = std::min(best, std::hypot(q.x - nodes[i].x - u * dx, q.y - nodes[i].y - u * dy));
+        }
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
+void append(Alignment& out, const Alignment& a, bool first) {
+    if (first) {
+        out.start = a.start;
+    }
+    out.primitives.insert(out.primitives.end(), a.primitives.begin(), a.primitives.end());
+}
+
+} // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignment& fit, const std::vector<Point>& p,
+                                                                  const std::vector<char>& skip, double limit,
+                                                                  std::size_t min_run) {
+    const std::vector<double> d = node_distances(fit, p);
+    const std::size_t n = p.size();
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (skip[k] || !(d[k] > limit)) {
+            continue;
+        }
+        std::size_t a = k > 2 ? k - 2 : 0, b = std::min(n - 1, k + 2);
+        a = a + 1 < min_run ? 0 : a;
+        b = n - b < min_run ? n - 1 : b;
+        if (!out.empty() && a + 1 < out.back().second + min_run) {
+            out.back().second = b;
+        } else {
+            out.push_back({a, b});
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> runs_between(
+    const std::vector<std::pair<std::size_t, std::size_t>>& stretches, std::size_t nodes) {
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    std::size_t from = 0;
+    bool open = true; // a run starts at `from`
+    for (const auto& [a, b] : stretches) {
+        if (open && a > from) {
+            runs.push_back({from, a});
+        }
+        from = b;
+        open = b + 1 < nodes;
+    }
+    if (open && from + 1 < nodes) {
+        runs.push_back({from, nodes - 1});
+    }
+    return runs;
+}
+
+std::optional<Alignment> assemble_patched(const std::vector<Point>& p,
+                                          const std::vector<std::pair<std::size_t, std::size_t>>& stretches,
+                                          const std::vector<Alignment>& run_fits, const std::optional<Pose>& start,
+                                          const std::optional<Pose>& end, const CornerFitOptions& o, double limit) {
+    Alignment out;
+    std::size_t next_run = 0; // index into run_fits
+    bool first = true;
+    const bool run_first = stretches.empty() || stretches.front().first > 0;
+    if (run_first && !run_fits.empty()) {
+        append(out, run_fits[next_run++], true);
+        first = false;
+    }
+    for (const auto& [a, b] : stretches) {
+        const std::optional<Pose> from =
+            a == 0 ? start : std::optional<Pose>(evaluate(run_fits[next_run - 1], length(run_fits[next_run - 1])));
+        const bool at_end = b + 1 == p.size();
+        const std::optional<Pose> to = at_end ? end : std::optional<Pose>(run_fits[next_run].start);
+        const std::vector<Point> nodes(p.begin() + static_cast<long>(a), p.begin() + static_cast<long>(b) + 1);
+        const Alignment corners = corner_polyline(nodes, from, to, o);
+        if (off_polyline(corners, nodes) > limit) {
+            return std::nullopt;
+        }
+        append(out, corners, first);
+        first = false;
+        if (!at_end) {
+            append(out, run_fits[next_run++], false);
+        }
+    }
+    return out;
+}
+
+} // namespace railodd::geometry
