@@ -76,3 +76,16 @@ TEST(ChainFit, AJogInALongChainIsPatchedAndTheRestKeepsItsDesign) {
         EXPECT_GT(e->length, 250.0);
     }
 }
+
+// A stray second node (7.9 m off, 225 m from the switch) of a chain tied at
+// both ends, OSM-like nodes at 0.1 m: the fit leaves it out, and the tie
+// beside it shows it out of line as a node there would. Counted as followed,
+// it made the chain's stretch there corners through it (7.7 m off the
+// centreline).
+TEST(ChainFit, AStrayBesideATiedEndIsLeftOut) {
+    const truth::TruthRoute r = test::truth_route(1026, 0.1, 0.01, truth::Spacing::osm);
+    const geometry::ChainFit f = geometry::fit_chain_points(r.nodes, pose_at(r.design, r.nodes.front()),
+                                                            pose_at(r.design, r.nodes.back()), design_search());
+    EXPECT_EQ(f.method, geometry::ChainMethod::railway);
+    EXPECT_LT(truth::score(r, f.alignment).deviation_max_m, 1.0);
+}

@@ -439,7 +439,7 @@ void constant_transitions_as_arcs(Alignment& a) {
 
 } // namespace
 
-std::vector<char> strays(const std::vector<double>& weight) {
+std::vector<char> strays(const std::vector<double>& weight, bool tied_start, bool tied_end) {
     constexpr std::size_t stray_run = 2, witnesses = 2;
     std::vector<std::size_t> kept_before(weight.size() + 1, 0);
     for (std::size_t i = 0; i < weight.size(); ++i) {
@@ -455,7 +455,9 @@ std::vector<char> strays(const std::vector<double>& weight) {
             ++i;
             continue;
         }
-        if (j - i <= stray_run && kept_before[i] >= witnesses && kept_before.back() - kept_before[j] >= witnesses) {
+        const std::size_t before = kept_before[i] + (tied_start ? 1 : 0);
+        const std::size_t after = kept_before.back() - kept_before[j] + (tied_end ? 1 : 0);
+        if (j - i <= stray_run && before >= witnesses && after >= witnesses) {
             std::fill(out.begin() + static_cast<std::ptrdiff_t>(i), out.begin() + static_cast<std::ptrdiff_t>(j), 1);
         }
         i = j;
@@ -463,8 +465,9 @@ std::vector<char> strays(const std::vector<double>& weight) {
     return out;
 }
 
-double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight) {
-    const std::vector<char> stray = strays(weight);
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight, bool tied_start,
+                    bool tied_end) {
+    const std::vector<char> stray = strays(weight, tied_start, tied_end);
     std::vector<Point> judged;
     for (std::size_t i = 0; i < all.size(); ++i) {
         if (!stray[i]) {
@@ -519,8 +522,8 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     r.quality.scatter_sigma_m = scatter.value_or(std::min(sigma, untold_scatter_max_m));
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));
-    r.quality.followed_max_m = followed_max(r.alignment, followed, weight);
-    const std::vector<char> stray = strays(weight);
+    r.quality.followed_max_m = followed_max(r.alignment, followed, weight, start.has_value(), end.has_value());
+    const std::vector<char> stray = strays(weight, start.has_value(), end.has_value());
     for (std::size_t i = 0; i < stray.size(); ++i) {
         if (stray[i]) {
             r.quality.strays.push_back(i);

@@ -44,9 +44,15 @@ void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 // followed nodes on either side to show it out of line; a longer run left
 // out is a stretch the design missed, and a node with fewer neighbours
 // cannot be told from the track (Cologne: the middle node of three on a
-// 676 m chain, tied at one end, left 17 m off). Those count.
-double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight);
+// 676 m chain, tied at one end, left 17 m off). Those count. A tied end's
+// pose (position and heading, as the network's fit of the track it leaves
+// put them) witnesses as a node beside it does: a stray second node of a
+// chain tied at its switch had one witness before it, and the chain went
+// to corners through it (OSM-like truth routes at 0.1 m tied at both ends:
+// 7.7 m off).
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight,
+                    bool tied_start = false, bool tied_end = false);
 // Which left-out nodes are such strays (1), by weight alone.
-std::vector<char> strays(const std::vector<double>& weight);
+std::vector<char> strays(const std::vector<double>& weight, bool tied_start = false, bool tied_end = false);
 
 } // namespace railodd::geometry::fit
