@@ -2,7 +2,8 @@
 // One chain's centreline from its mapped nodes and tied end poses: the
 // railway fit where it follows the nodes, the corner construction where it
 // does not, and both spliced where only some stretches go wrong (next to a
-// tied end, or round a few nodes). Whatever is chosen is G2 and meets the tied poses exactly.
+// tied end, or round a few nodes). Whatever is chosen is G2 and meets the
+// tied poses exactly.
 #include "railodd/geometry/fit_alignment.hpp"
 
 #include <cstddef>
@@ -14,7 +15,7 @@ namespace railodd::geometry {
 enum class ChainMethod {
     railway, // fit_alignment as it is
     spliced, // fit_alignment with the stretch next to a tied end rebuilt by corners
-    patched, // fit_alignment with the stretches round nodes it strays from rebuilt by corners
+    patched, // corners round the nodes fit_alignment strays from, fit_alignment again between (stretch_patch.hpp)
     corners, // the corner construction throughout
 };
 

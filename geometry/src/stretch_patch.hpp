@@ -16,10 +16,10 @@
 namespace railodd::geometry {
 
 // Node ranges [a, b] round each node that `fit` passes further than `limit`
-// from: two nodes either side, to the chain's end where that is within
-// three nodes, ranges that meet or leave fewer than `min_run` nodes between
-// them merged. Nodes flagged in `skip` (strays the fit left out) are not
-// judged. Ascending.
+// from: two nodes either side, run on to the chain's end, or merged with
+// the next range, where fewer than `min_run` nodes would lie between (too
+// few to fit again). Nodes flagged in `skip` (strays the fit left out) are
+// not judged. Ascending.
 std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignment& fit, const std::vector<Point>& points,
                                                                   const std::vector<char>& skip, double limit,
                                                                   std::size_t min_run);

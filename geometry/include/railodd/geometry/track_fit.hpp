@@ -66,8 +66,8 @@ struct FittedNetwork {
     // free (docs/geometry.md).
     std::size_t spliced_ends = 0;
     // Stretches round a few nodes a railway fit strayed from (beyond what
-    // their noise explains, by 2 m) rebuilt by the corner construction, the
-    // rest of the chain's design kept (chain_fit.cpp).
+    // their noise explains, by 2 m) built by the corner construction, the
+    // nodes between them fitted again as railway design (stretch_patch.hpp).
     std::size_t patched_stretches = 0;
     // Node scatter per chain (estimated from its nodes unless the options
     // gave one; 0 for degenerate chains) and the nodes left out as outliers.
