@@ -32,7 +32,7 @@ double followed(const std::vector<std::pair<int, double>>& off, bool tied_start 
         p[static_cast<std::size_t>(i)].y = y;
         w[static_cast<std::size_t>(i)] = 0.0;
     }
-    return fit::followed_max(straight(), p, w, tied_start, tied_end);
+    return fit::followed_max(straight(), p, fit::strays(w, tied_start, tied_end));
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // Cutting a chain's fit round the nodes it misses; see stretch_patch.hpp.
 #include "stretch_patch.hpp"
 
-#include "railodd/geometry/indexed_alignment.hpp"
+#include "tie_splice.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,23 +10,6 @@
 namespace railodd::geometry {
 
 namespace {
-
-// Each node's distance from the fit, searched near where the mapped
-// polyline puts it so that a chain passing itself cannot hand it to the
-// wrong pass.
-std::vector<double> node_distances(const Alignment& fit, const std::vector<Point>& p) {
-    std::vector<double> t(p.size(), 0.0);
-    for (std::size_t i = 1; i < p.size(); ++i) {
-        t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
-    }
-    const IndexedAlignment ia(fit, 2.0);
-    const double scale = t.back() > 0.0 ? ia.length() / t.back() : 0.0;
-    std::vector<double> d(p.size());
-    for (std::size_t k = 0; k < p.size(); ++k) {
-        d[k] = ia.project_within(p[k].x, p[k].y, t[k] * scale - 100.0, t[k] * scale + 100.0).distance;
-    }
-    return d;
-}
 
 // The furthest the piece passes from the polyline through `nodes` (its
 // first and last point where the piece starts and ends), every 2 m.
@@ -50,8 +33,8 @@ double off_polyline(const Alignment& piece, std::vector<Point> nodes) {
     return worst;
 }
 
-void append(Alignment& out, const Alignment& a, bool first) {
-    if (first) {
+void append(Alignment& out, const Alignment& a) {
+    if (out.primitives.empty()) {
         out.start = a.start;
     }
     out.primitives.insert(out.primitives.end(), a.primitives.begin(), a.primitives.end());
@@ -62,11 +45,12 @@ void append(Alignment& out, const Alignment& a, bool first) {
 std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignment& fit, const std::vector<Point>& p,
                                                                   const std::vector<char>& skip, double limit,
                                                                   std::size_t min_run) {
-    const std::vector<double> d = node_distances(fit, p);
+    const std::vector<double> t = polyline_chainage(p);
+    const IndexedAlignment ia(fit, 2.0);
     const std::size_t n = p.size();
     std::vector<std::pair<std::size_t, std::size_t>> out;
     for (std::size_t k = 0; k < n; ++k) {
-        if (skip[k] || !(d[k] > limit)) {
+        if (skip[k] || !(node_on(ia, p, t, k).distance > limit)) {
             continue;
         }
         std::size_t a = k > 2 ? k - 2 : 0, b = std::min(n - 1, k + 2);
@@ -105,11 +89,8 @@ std::optional<Alignment> assemble_patched(const std::vector<Point>& p,
                                           const std::optional<Pose>& end, const CornerFitOptions& o, double limit) {
     Alignment out;
     std::size_t next_run = 0; // index into run_fits
-    bool first = true;
-    const bool run_first = stretches.empty() || stretches.front().first > 0;
-    if (run_first && !run_fits.empty()) {
-        append(out, run_fits[next_run++], true);
-        first = false;
+    if ((stretches.empty() || stretches.front().first > 0) && !run_fits.empty()) {
+        append(out, run_fits[next_run++]);
     }
     for (const auto& [a, b] : stretches) {
         const std::optional<Pose> from =
@@ -121,10 +102,9 @@ std::optional<Alignment> assemble_patched(const std::vector<Point>& p,
         if (off_polyline(corners, nodes) > limit) {
             return std::nullopt;
         }
-        append(out, corners, first);
-        first = false;
+        append(out, corners);
         if (!at_end) {
-            append(out, run_fits[next_run++], false);
+            append(out, run_fits[next_run++]);
         }
     }
     return out;

@@ -9,9 +9,7 @@
 
 namespace railodd::geometry {
 
-namespace {
-
-std::vector<double> chainage(const std::vector<Point>& p) {
+std::vector<double> polyline_chainage(const std::vector<Point>& p) {
     std::vector<double> t(p.size(), 0.0);
     for (std::size_t i = 1; i < p.size(); ++i) {
         t[i] = t[i - 1] + std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
@@ -19,12 +17,15 @@ std::vector<double> chainage(const std::vector<Point>& p) {
     return t;
 }
 
-// Arc length of node k on the fit, searched near where the mapped polyline
-// puts it so that a chain passing itself cannot hand it to the wrong pass.
+Projection node_on(const IndexedAlignment& fit, const std::vector<Point>& p, const std::vector<double>& t, std::size_t k) {
+    const double expected = t.back() > 0.0 ? t[k] * fit.length() / t.back() : 0.0;
+    return fit.project_within(p[k].x, p[k].y, expected - 100.0, expected + 100.0);
+}
+
+namespace {
+
 double node_s(const Alignment& fit, const std::vector<Point>& p, const std::vector<double>& t, std::size_t k) {
-    const IndexedAlignment ia(fit, 2.0);
-    const double expected = t.back() > 0.0 ? t[k] * ia.length() / t.back() : 0.0;
-    return ia.project_within(p[k].x, p[k].y, expected - 100.0, expected + 100.0).s;
+    return node_on(IndexedAlignment(fit, 2.0), p, t, k).s;
 }
 
 EndMiss miss(const Pose& got, const Pose& want) {
@@ -37,7 +38,7 @@ EndMiss miss(const Pose& got, const Pose& want) {
 
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Pose& end, double tail_m,
                      const CornerFitOptions& o) {
-    const std::vector<double> t = chainage(p);
+    const std::vector<double> t = polyline_chainage(p);
     std::size_t k = p.size() - 1;
     while (k > 0 && (k + 1 == p.size() || t.back() - t[k] < tail_m)) {
         --k;
@@ -58,7 +59,7 @@ Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Po
 
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& p, const Pose& start, double tail_m,
                        const CornerFitOptions& o) {
-    const std::vector<double> t = chainage(p);
+    const std::vector<double> t = polyline_chainage(p);
     std::size_t k = 0;
     while (k + 1 < p.size() && (k == 0 || t[k] < tail_m)) {
         ++k;

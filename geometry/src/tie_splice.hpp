@@ -5,10 +5,19 @@
 // of the fit is kept as it is, and the joint is G2 because the construction
 // starts (or ends) with the fit's pose and curvature there.
 #include "railodd/geometry/corner_fit.hpp"
+#include "railodd/geometry/indexed_alignment.hpp"
 
 #include <vector>
 
 namespace railodd::geometry {
+
+// Each node's distance along the mapped polyline through `points`.
+std::vector<double> polyline_chainage(const std::vector<Point>& points);
+// Node k's foot on the fit, searched near where the polyline puts it (its
+// chainage t[k], scaled to the fit's length) so that a chain passing
+// itself cannot hand it to the wrong pass.
+Projection node_on(const IndexedAlignment& fit, const std::vector<Point>& points, const std::vector<double>& t,
+                   std::size_t k);
 
 // points: the chain's mapped nodes in order. The spliced stretch covers the
 // nodes within tail_m of the end (at least the last segment).

@@ -6,11 +6,10 @@
 // nodes make the curvature of mapping noise: 0.3 m over 10 m reads as R 80 m).
 #include "parts.hpp"
 
+#include "railodd/util/beside.hpp"
 #include "railodd/util/errors.hpp"
 
 #include <algorithm>
-#include "railodd/util/beside.hpp"
-
 #include <future>
 #include <set>
 

@@ -465,9 +465,7 @@ std::vector<char> strays(const std::vector<double>& weight, bool tied_start, boo
     return out;
 }
 
-double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight, bool tied_start,
-                    bool tied_end) {
-    const std::vector<char> stray = strays(weight, tied_start, tied_end);
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<char>& stray) {
     std::vector<Point> judged;
     for (std::size_t i = 0; i < all.size(); ++i) {
         if (!stray[i]) {
@@ -522,8 +520,8 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     r.quality.scatter_sigma_m = scatter.value_or(std::min(sigma, untold_scatter_max_m));
     r.quality.windows = 1;
     r.quality.outliers = static_cast<std::size_t>(std::count(weight.begin(), weight.end(), 0.0));
-    r.quality.followed_max_m = followed_max(r.alignment, followed, weight, start.has_value(), end.has_value());
     const std::vector<char> stray = strays(weight, start.has_value(), end.has_value());
+    r.quality.followed_max_m = followed_max(r.alignment, followed, stray);
     for (std::size_t i = 0; i < stray.size(); ++i) {
         if (stray[i]) {
             r.quality.strays.push_back(i);

@@ -38,9 +38,9 @@ struct DesignPass {
 // out) updated.
 void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 
-// The furthest node the design follows (weight[i] 0: left out). A chain
-// whose left-out strays lie far off is still a railway fit: the strays are
-// the mapping's fault. A stray is one node, or two side by side, with two
+// Which left-out nodes (weight 0) are strays (1). A chain whose left-out
+// strays lie far off is still a railway fit: the strays are the mapping's
+// fault (followed_max). A stray is one node, or two side by side, with two
 // followed nodes on either side to show it out of line; a longer run left
 // out is a stretch the design missed, and a node with fewer neighbours
 // cannot be told from the track (Cologne: the middle node of three on a
@@ -50,9 +50,8 @@ void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 // chain tied at its switch had one witness before it, and the chain went
 // to corners through it (OSM-like truth routes at 0.1 m tied at both ends:
 // 7.7 m off).
-double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight,
-                    bool tied_start = false, bool tied_end = false);
-// Which left-out nodes are such strays (1), by weight alone.
 std::vector<char> strays(const std::vector<double>& weight, bool tied_start = false, bool tied_end = false);
+// The furthest node the design follows: every node but the strays.
+double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<char>& stray);
 
 } // namespace railodd::geometry::fit
