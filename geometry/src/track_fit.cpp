@@ -185,6 +185,11 @@ private:
                 if (!waits_on(g, c)) {
                     guide_[c].push_back(g);
                     depends_[c].push_back(g);
+                } else if (!waits_on(c, g)) {
+                    // The longer track waits on this one (through its
+                    // ties): this one, fitted first, guides it instead.
+                    guide_[g].push_back(c);
+                    depends_[g].push_back(c);
                 }
             }
         }

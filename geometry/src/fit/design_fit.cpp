@@ -44,6 +44,12 @@ constexpr int search_rounds = 2;
 // A parallel track's curvature held as firmly as a 100 m stretch of this
 // chain's own curvature known to 2e-5 1/m (per metre per (1/m)^2).
 constexpr double guide_weight = 1.0 / (100.0 * 2e-5 * 2e-5);
+// A knot shared with a parallel track held in the polish where the search
+// put it: a metre along costs as much as a node one sigma off.
+constexpr double shared_knot_weight = 1.0;
+// A knot within this of a guide's joint is the guide's: carried from pass
+// to pass, it moves by rounding.
+constexpr double shared_knot_m = 0.25;
 
 // The parameters the design spent on the nodes: the start state and each
 // element's length, a transition's slope besides.
@@ -208,7 +214,7 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     const std::vector<FrameElement> seed = carried(previous, o);
     if (ties.guides && !ties.guides->empty() && !seed.empty()) {
         auto guide = std::make_shared<const GuideCurvature>(ref, o.s0, o.s1, *ties.guides, seed, guide_weight);
-        if (!guide->empty()) {
+        if (!guide->empty() || !guide->joints().empty()) {
             o.guide = std::move(guide);
         }
     }
@@ -221,6 +227,7 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
             pass.design = research_windows(nodes, std::move(pass.design), o);
         }
     }
+    pass.design = take_guided_runs(nodes, std::move(pass.design), o);
     pass.alignment = to_alignment(ref, pass.design);
     pass.nodes = std::move(nodes);
     pass.options = o;
@@ -281,6 +288,25 @@ FitResult unpolished(const DesignPass& pass, CurvatureModel m, const std::vector
     return kept ? met : before;
 }
 
+// The knots the design took from a parallel track (design_guided.cpp) held
+// where the search put them, within about a metre: on sparse nodes the
+// polish slid them along a flat valley (Liechtenstein: a transition 14 m
+// along from its neighbour's), and the two tracks' curves no longer matched.
+void hold_shared_knots(const DesignPass& pass, const CurvatureModel& m, SolveOptions& so) {
+    const auto& el = pass.design.elements;
+    const auto& joints = pass.options.guide->joints();
+    so.knot_at.assign(m.segments() + 1, 0.0);
+    so.knot_weight.assign(m.segments() + 1, 0.0);
+    double at = 0.0;
+    for (std::size_t k = 1; k < el.size(); ++k) {
+        at += m.lengths[k - 1];
+        const bool shared = std::any_of(joints.begin(), joints.end(),
+                                        [&](const GuideCurvature::Joint& j) { return std::abs(j.t - el[k].s0) < shared_knot_m; });
+        so.knot_at[k] = at;
+        so.knot_weight[k] = shared ? shared_knot_weight : 0.0;
+    }
+}
+
 // A few Levenberg-Marquardt steps on exact clothoids with the structure
 // fixed: what the frame's small-angle model left (second order in the
 // offsets, the lengths along a curve). The alignment kept and its distances
@@ -315,6 +341,7 @@ FitResult polish(const DesignPass& pass, const std::vector<Point2>& p, const std
             so.guide_curvature.push_back(g.curvature);
             so.guide_at.push_back(e.s1 > e.s0 ? std::clamp((g.at - e.s0) / (e.s1 - e.s0), 0.0, 1.0) : 0.5);
         }
+        hold_shared_knots(pass, m, so);
     }
     const SolveReport r = solve(m, p, so);
     FitResult before = unpolished(pass, unsolved, all, sigma, end);

@@ -25,6 +25,8 @@ constexpr double own_tolerance = 1e-4, own_share = 0.25;
 struct Sample {
     bool beside = false;
     double k = 0.0, offset = 0.0;
+    std::size_t guide = 0; // which guide, and the foot's arc length on it
+    double s = 0.0;
 };
 
 // The concentric curvature a guide asks for at reference point `at`, if it
@@ -41,17 +43,67 @@ Sample guided_curvature(const IndexedAlignment& g, const Pose& at) {
         return {};
     }
     const double concentric = p.curvature / (1.0 - pr.offset * p.curvature);
-    return {true, along > 0.0 ? concentric : -concentric, pr.offset};
+    return {true, along > 0.0 ? concentric : -concentric, pr.offset, 0, pr.s};
 }
 
 Sample beside_any(const std::vector<IndexedAlignment>& guides, const Pose& at) {
-    for (const IndexedAlignment& guide : guides) {
-        const Sample s = guided_curvature(guide, at);
+    for (std::size_t g = 0; g < guides.size(); ++g) {
+        Sample s = guided_curvature(guides[g], at);
         if (s.beside) {
+            s.guide = g;
             return s;
         }
     }
     return {};
+}
+
+ElementKind kind_of(const Primitive& p) {
+    return p.kind == PrimitiveKind::line ? ElementKind::line
+                                         : (p.kind == PrimitiveKind::arc ? ElementKind::arc : ElementKind::transition);
+}
+
+// The guide's element joints (arc lengths), ascending.
+std::vector<double> joints(const IndexedAlignment& g) {
+    std::vector<double> j;
+    double s = 0.0;
+    for (const Primitive& p : g.alignment().primitives) {
+        s += p.length;
+        j.push_back(s);
+    }
+    j.pop_back(); // the end is no joint
+    return j;
+}
+
+// The chainages across from a guide's joints, between samples beside it,
+// with its elements' kinds either side in this chain's direction; a run
+// of samples beside one guide is one run.
+std::vector<GuideCurvature::Joint> joints_across(const std::vector<double>& ts, const std::vector<Sample>& samples,
+                                                 const std::vector<IndexedAlignment>& guides) {
+    std::vector<std::vector<double>> at(guides.size());
+    std::vector<GuideCurvature::Joint> out;
+    std::size_t run = 0;
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+        const Sample& a = samples[i];
+        const Sample& b = samples[i + 1];
+        if (!a.beside || !b.beside || a.guide != b.guide) {
+            run += a.beside ? 1 : 0;
+            continue;
+        }
+        if (at[a.guide].empty()) {
+            at[a.guide] = joints(guides[a.guide]);
+        }
+        const std::vector<double>& j = at[a.guide];
+        const auto& prim = guides[a.guide].alignment().primitives;
+        const double lo = std::min(a.s, b.s), hi = std::max(a.s, b.s);
+        for (auto it = std::upper_bound(j.begin(), j.end(), lo); it != j.end() && *it <= hi; ++it) {
+            const auto k = static_cast<std::size_t>(it - j.begin());
+            const ElementKind first = kind_of(prim[k]), second = kind_of(prim[k + 1]);
+            const bool along = b.s > a.s;
+            out.push_back({ts[i] + (ts[i + 1] - ts[i]) * (*it - a.s) / (b.s - a.s), along ? first : second,
+                           along ? second : first, run});
+        }
+    }
+    return out;
 }
 
 // Runs of samples beside a guide kept where they are long and steady.
@@ -97,20 +149,29 @@ double curvature_at(const std::vector<FrameElement>& el, double t) {
 GuideCurvature::GuideCurvature(const ReferenceLine& ref, double t0, double t1, const std::vector<IndexedAlignment>& guides,
                                const std::vector<FrameElement>& own, double weight, double step) {
     std::vector<double> ts;
-    std::vector<Sample> samples;
+    std::vector<Sample> beside;
     for (double t = t0 + 0.5 * step; t < t1; t += step) {
         ts.push_back(t);
-        Sample s = beside_any(guides, ref.at(t));
-        if (s.beside && !own.empty() && std::abs(curvature_at(own, t) - s.k) > own_tolerance + own_share * std::abs(s.k)) {
+        beside.push_back(beside_any(guides, ref.at(t)));
+    }
+    // The joints wherever the tracks run side by side: a rival structure is
+    // judged by the nodes (design_guided.cpp); the prior only where the
+    // chain's own design agrees.
+    std::vector<Sample> samples = beside;
+    keep_steady_runs(beside, step);
+    joints_ = joints_across(ts, beside, guides);
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+        Sample& s = samples[i];
+        if (s.beside && !own.empty() && std::abs(curvature_at(own, ts[i]) - s.k) > own_tolerance + own_share * std::abs(s.k)) {
             s.beside = false;
         }
-        samples.push_back(s);
     }
     keep_steady_runs(samples, step);
     for (std::size_t i = 0; i < ts.size(); ++i) {
         const double w = samples[i].beside ? weight * step : 0.0, g = samples[i].k;
         append(ts[i], w, w * g, w * g * g);
     }
+    mirrored_ = std::make_shared<const GuideCurvature>(mirror());
 }
 
 void GuideCurvature::append(double t, double w, double wg, double wgg) {
@@ -126,19 +187,34 @@ void GuideCurvature::append(double t, double w, double wg, double wgg) {
 }
 
 std::pair<std::size_t, std::size_t> GuideCurvature::samples_in(double a, double b) const {
+    // The samples lie a step apart: the index is read off and then stepped
+    // to the first at or after x (lower_bound's answer; the chainages were
+    // summed step by step). A binary search per element cost 6 % of a fit.
+    const double step = t_.size() > 1 ? (t_.back() - t_.front()) / static_cast<double>(t_.size() - 1) : 1.0;
     const auto at = [&](double x) {
-        return static_cast<std::size_t>(std::lower_bound(t_.begin(), t_.end(), x) - t_.begin());
+        const double guess = t_.empty() ? 0.0 : std::ceil((x - t_.front()) / step);
+        auto i = static_cast<std::size_t>(std::clamp(guess, 0.0, static_cast<double>(t_.size())));
+        while (i < t_.size() && t_[i] < x) {
+            ++i;
+        }
+        while (i > 0 && t_[i - 1] >= x) {
+            --i;
+        }
+        return i;
     };
     return {at(a), at(b)};
 }
 
-GuideCurvature GuideCurvature::mirrored() const {
+GuideCurvature GuideCurvature::mirror() const {
     GuideCurvature m;
     for (std::size_t j = t_.size(); j-- > 0;) {
         // Sample j's own terms, at chainage -t.
         const Sums& a = sums_[j];
         const Sums& b = sums_[j + 1];
         m.append(-t_[j], b.w - a.w, b.wg - a.wg, b.wgg - a.wgg);
+    }
+    for (auto it = joints_.rbegin(); it != joints_.rend(); ++it) {
+        m.joints_.push_back({-it->t, it->after, it->before, it->run});
     }
     return m;
 }

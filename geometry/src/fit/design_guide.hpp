@@ -9,6 +9,7 @@
 
 #include "railodd/geometry/indexed_alignment.hpp"
 
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -28,8 +29,10 @@ public:
                    const std::vector<FrameElement>& own, double weight, double step = 2.0);
     bool empty() const { return !(sums_.back().w > 0.0); }
     // The same prior over chainages negated (StructureCosts' mirrored chain;
-    // curvature keeps its sign when the chainage runs the other way).
-    GuideCurvature mirrored() const;
+    // curvature keeps its sign when the chainage runs the other way), built
+    // with it: every local search mirrors the chain, and mirroring the prior
+    // each time cost 3 % of a fit.
+    const std::shared_ptr<const GuideCurvature>& mirrored() const { return mirrored_; }
     // Adds sum w (k(t) - g(t))^2 over the samples in [a, b) to the cost of
     // an element starting at chainage s (k = (x2 + x3 u) / S^2, u = (t - s) / S).
     void add(design::Quad& f, double s, double a, double b) const;
@@ -39,6 +42,15 @@ public:
         double weight = 0.0, curvature = 0.0, at = 0.0;
     };
     Mean over(double a, double b) const;
+    // A guide's element joint where the prior holds: the chainage across
+    // from it, the guide's element kinds before and after it in this
+    // chain's direction, and which run beside a guide it lies in.
+    struct Joint {
+        double t = 0.0;
+        ElementKind before = ElementKind::line, after = ElementKind::line;
+        std::size_t run = 0;
+    };
+    const std::vector<Joint>& joints() const { return joints_; }
 
 private:
     GuideCurvature() = default;
@@ -51,6 +63,15 @@ private:
     void append(double t, double w, double wg, double wgg);
     std::vector<double> t_;          // sample chainages, ascending
     std::vector<Sums> sums_{Sums{}}; // prefix sums: sums_[i] over samples [0, i)
+    std::vector<Joint> joints_; // ascending
+    std::shared_ptr<const GuideCurvature> mirrored_;
+    GuideCurvature mirror() const;
 };
+
+// Each run beside a guide: the design's elements between two of the
+// guide's joints replaced by the guide's structure there (its kinds at its
+// knots, the curvatures solved), kept where that costs less
+// (design_guided.cpp).
+FrameDesign take_guided_runs(const std::vector<FrameNode>& nodes, FrameDesign design, const DesignDpOptions& o);
 
 } // namespace railodd::geometry::fit

@@ -81,7 +81,7 @@ StructureCosts::StructureCosts(const std::vector<FrameNode>& nodes, const Design
     mirror_options_.before = o.after;
     mirror_options_.after = o.before;
     if (o.guide) {
-        mirror_options_.guide = std::make_shared<const GuideCurvature>(o.guide->mirrored());
+        mirror_options_.guide = o.guide->mirrored();
     }
 }
 

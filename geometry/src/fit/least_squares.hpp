@@ -52,6 +52,11 @@ struct SolveOptions {
     // the segment's curvature's distance from it there (empty: none): the
     // design search's guide (design_guide.hpp), so the polish keeps it.
     std::vector<double> guide_curvature, guide_at, guide_weight;
+    // Per knot (segments + 1), the arc length from the start it is held at
+    // and the weight of its distance from there (empty: none): a knot the
+    // chain shares with a parallel track (design_guided.cpp), which the
+    // chain's own nodes, sparse, would let slide along a flat valley.
+    std::vector<double> knot_at, knot_weight;
 };
 
 struct SolveReport {

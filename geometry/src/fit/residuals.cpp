@@ -117,6 +117,9 @@ std::size_t row_count(const CurvatureModel& m, const Problem& p) {
     if (!p.opt.guide_weight.empty()) {
         rows += m.segments();
     }
+    if (!p.opt.knot_weight.empty()) {
+        rows += m.segments() + 1;
+    }
     return rows;
 }
 
@@ -190,8 +193,21 @@ double guide_row(const CurvatureModel& m, const Problem& p, std::size_t j) {
     return std::sqrt(w) * ((1.0 - f) * m.knot_curvature(j) + f * m.knot_curvature(j + 1) - p.opt.guide_curvature[j]);
 }
 
+// A knot's arc length against where it is held (zero where it is not).
+double knot_row(const CurvatureModel& m, const Problem& p, std::size_t k) {
+    const double w = k < p.opt.knot_weight.size() ? p.opt.knot_weight[k] : 0.0;
+    if (w <= 0.0) {
+        return 0.0;
+    }
+    double s = 0.0;
+    for (std::size_t j = 0; j < k; ++j) {
+        s += m.lengths[j];
+    }
+    return std::sqrt(w) * (s - p.opt.knot_at[k]);
+}
+
 // Residual rows: the point rows, then curvature kinks, the ridge, the
-// transition priors, the guide. The
+// transition priors, the guide, the held knots. The
 // end pose is a constraint (end_constraint.hpp), or weighted rows appended
 // where it cannot be one.
 void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
@@ -215,6 +231,11 @@ void fill_residuals(const CurvatureModel& m, const std::vector<Foot>& feet,
     if (!p.opt.guide_weight.empty()) {
         for (std::size_t j = 0; j < m.segments(); ++j) {
             r[row++] = guide_row(m, p, j);
+        }
+    }
+    if (!p.opt.knot_weight.empty()) {
+        for (std::size_t k = 0; k <= m.segments(); ++k) {
+            r[row++] = knot_row(m, p, k);
         }
     }
 }
@@ -256,6 +277,14 @@ void smoothness_column(const CurvatureModel& m2, const ParameterMap& map, std::s
         for (std::size_t j = a == 0 ? 0 : a - 1; j < m2.segments() && j <= b + 1; ++j) {
             const long at = static_cast<long>(row + j);
             J(at, col) = (guide_row(m2, p, j) - r[at]) / h;
+        }
+        row += m2.segments();
+    }
+    // A length moves every knot after its segment.
+    if (!p.opt.knot_weight.empty() && map.is_length(i)) {
+        for (std::size_t k = a + 1; k <= m2.segments(); ++k) {
+            const long at = static_cast<long>(row + k);
+            J(at, col) = (knot_row(m2, p, k) - r[at]) / h;
         }
     }
 }
