@@ -71,3 +71,15 @@ TEST(DesignSummary, TracksTooFarApartOrStraightAreNotPairs) {
     EXPECT_EQ(summarise_design({a, b}).parallel_pairs, 0u); // straight: nothing to compare
     EXPECT_EQ(summarise_design({arc(0, 0, 500, 600), arc(0, 12, 488, 600)}).parallel_pairs, 0u);
 }
+
+TEST(DesignSummary, ATrackLeavingItsNeighbourIsNoPair) {
+    // A turnout's curve of R 300 m leaving 3 m beside a curved track, under
+    // 0.05 rad off its direction for its first 15 m: beside it, but parting
+    // (its offset 0.7 m more 20 m on), not a parallel track.
+    const Alignment through = arc(0, 0, 2000, 600);
+    const Pose at = evaluate(through, 200.0);
+    Alignment leg;
+    leg.start = {at.x - 3.0 * std::sin(at.hdg), at.y + 3.0 * std::cos(at.hdg), at.hdg, 0.0};
+    leg.primitives = {make_arc(60.0, 1.0 / 300.0)};
+    EXPECT_EQ(summarise_design({through, leg}).parallel_pairs, 0u);
+}

@@ -17,6 +17,7 @@ namespace {
 
 constexpr double straight = 1.0 / 20000.0; // curvature below which a track is straight
 constexpr double curved = 1.0 / 5000.0;    // curvature from which parallel curves are compared
+constexpr double steady_m = 20.0, steady_offset_m = 0.5; // a parallel track keeps its offset this far either way
 
 struct Sample {
     std::size_t track = 0;
@@ -67,10 +68,37 @@ private:
     std::vector<std::pair<std::int64_t, Entry>> cells_;
 };
 
+// Whether a track keeps its offset from a neighbour (foot f) 20 m either
+// way, within 0.5 m: a turnout's leg or a crossover passes 3-6 m from the
+// other track for a few tens of metres at an angle, and is no double track
+// (VDE 8.2: 3,531 of the 5,207 points over 10 % lay on such encounters
+// shorter than 100 m, of 4,007 points there). A side where either track
+// ends (an edge at a switch) tells nothing; one side must tell.
+bool keeps_offset(const Sample& q, const IndexedAlignment& self, const IndexedAlignment& other, const Projection& f) {
+    int told = 0;
+    for (const double ds : {-steady_m, steady_m}) {
+        const double s = q.s + ds;
+        if (s < 0.0 || s > self.length()) {
+            continue;
+        }
+        const Pose p = self.evaluate(s);
+        const Projection g = other.project_within(p.x, p.y, f.s - 2.0 * steady_m, f.s + 2.0 * steady_m);
+        if (g.s <= 0.0 || g.s >= other.length()) {
+            continue;
+        }
+        if (std::abs(g.offset - f.offset) > steady_offset_m) {
+            return false;
+        }
+        ++told;
+    }
+    return told > 0;
+}
+
 // The relative curvature difference at a curved sample and its parallel
 // neighbour: the nearest other track whose foot lies 3-6 m beside it, within
-// 0.05 rad of its direction (either way). The track's own continuation
-// (another edge) is at its foot and is passed over.
+// 0.05 rad of its direction (either way), keeping that offset 20 m either
+// way. The track's own continuation (another edge) is at its foot and is
+// passed over.
 std::optional<double> parallel_difference(const Sample& q, const SampleGrid& grid,
                                           const std::vector<IndexedAlignment>& tracks) {
     std::vector<std::pair<double, const Entry*>> near;
@@ -97,7 +125,7 @@ std::optional<double> parallel_difference(const Sample& q, const SampleGrid& gri
         const Pose n = tracks[other].evaluate(f.s);
         const double turn = std::remainder(n.hdg - q.pose.hdg, 2 * std::numbers::pi);
         const bool opposite = std::abs(turn) > 0.5 * std::numbers::pi;
-        if (std::abs(std::remainder(turn, std::numbers::pi)) > 0.05) {
+        if (std::abs(std::remainder(turn, std::numbers::pi)) > 0.05 || !keeps_offset(q, tracks[q.track], tracks[other], f)) {
             continue;
         }
         // The neighbour's curvature and this point's offset from it (left

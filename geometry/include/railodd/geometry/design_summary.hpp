@@ -20,7 +20,9 @@ struct DesignSummary {
     double elements_per_km = 0.0;
     double sign_changes_per_km = 0.0; // of curvature (|k| > 1/20,000 m), sampled every 5 m
     // Curved points (|k| > 1/5,000 m, every 10 m) with a parallel track 3-6 m
-    // beside them, and the relative difference of the two curvatures (the
+    // beside them (within 0.05 rad of their direction, keeping that offset
+    // within 0.5 m 20 m either way: not a turnout's leg or a crossover
+    // passing), and the relative difference of the two curvatures (the
     // neighbour's taken at the foot, corrected for the offset of concentric
     // curves: k / (1 - k d)).
     std::size_t parallel_pairs = 0;
