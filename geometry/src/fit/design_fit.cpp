@@ -298,12 +298,19 @@ void hold_shared_knots(const DesignPass& pass, const CurvatureModel& m, SolveOpt
     so.knot_at.assign(m.segments() + 1, 0.0);
     so.knot_weight.assign(m.segments() + 1, 0.0);
     double at = 0.0;
+    bool any = false;
     for (std::size_t k = 1; k < el.size(); ++k) {
         at += m.lengths[k - 1];
         const bool shared = std::any_of(joints.begin(), joints.end(),
                                         [&](const GuideCurvature::Joint& j) { return std::abs(j.t - el[k].s0) < shared_knot_m; });
         so.knot_at[k] = at;
         so.knot_weight[k] = shared ? shared_knot_weight : 0.0;
+        any = any || shared;
+    }
+    if (!any) {
+        // No rows at all: the Jacobian is dense, a row per knot of a long chain.
+        so.knot_at.clear();
+        so.knot_weight.clear();
     }
 }
 
