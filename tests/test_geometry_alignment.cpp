@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -303,6 +304,34 @@ TEST(Projection, TreeSearchFindsTheNearestPointOnLongWindingTracks) {
             EXPECT_GE(w.s, s0 - 4.0);
             EXPECT_LE(w.s, s1 + 4.0);
             EXPECT_LE(w.distance, dense_nearest(idx, x, y, s0, s1) + 1e-6) << "seed " << seed << " query " << q;
+        }
+    }
+}
+
+// project_near is project() where the curve passes within the radius, and
+// nothing where it passes nowhere within it (the design search's guides ask
+// it of every 2 m of a chain).
+TEST(Projection, NearIsProjectWithinTheRadiusAndNothingBeyond) {
+    for (const unsigned seed : {1u, 2u}) {
+        const Alignment a = winding_alignment(seed, 300);
+        const IndexedAlignment idx(a);
+        std::mt19937 rng(seed + 200);
+        std::uniform_real_distribution<double> along(0.0, idx.length()), off(-20.0, 20.0);
+        for (int q = 0; q < 200; ++q) {
+            const Pose p = evaluate(a, along(rng));
+            const double o = off(rng);
+            const double x = p.x - o * std::sin(p.hdg), y = p.y + o * std::cos(p.hdg);
+            const Projection r = idx.project(x, y);
+            const std::optional<Projection> n = idx.project_near(x, y, 6.5);
+            if (r.distance <= 6.5) {
+                ASSERT_TRUE(n.has_value()) << "seed " << seed << " query " << q;
+            }
+            if (n) {
+                EXPECT_EQ(n->s, r.s);
+                EXPECT_EQ(n->distance, r.distance);
+            } else {
+                EXPECT_GT(r.distance, 6.5);
+            }
         }
     }
 }

@@ -32,7 +32,7 @@ Residual residual(const Pose& p, double x, double y) {
 } // namespace
 
 IndexedAlignment::IndexedAlignment(Alignment alignment, double sample_step)
-    : alignment_(std::move(alignment)) {
+    : alignment_(std::move(alignment)), step_(sample_step) {
     if (!(sample_step > 0.0) || !std::isfinite(sample_step)) {
         throw std::invalid_argument("IndexedAlignment: sample step must be positive, got " +
                                     std::to_string(sample_step));
@@ -195,12 +195,24 @@ std::size_t IndexedAlignment::nearest_sample(double x, double y, std::size_t fir
 }
 
 Projection IndexedAlignment::project_samples(double x, double y, std::size_t first, std::size_t last) const {
-    const std::size_t best = nearest_sample(x, y, first, last);
+    return refined(x, y, nearest_sample(x, y, first, last));
+}
+
+Projection IndexedAlignment::refined(double x, double y, std::size_t best) const {
     const double lo = samples_[best == 0 ? 0 : best - 1].s;
     const double hi = samples_[std::min(best + 1, samples_.size() - 1)].s;
     const double s = refine(x, y, lo, hi, samples_[best].s);
     const Residual r = residual(evaluate(s), x, y);
     return {s, r.offset, r.distance};
+}
+
+std::optional<Projection> IndexedAlignment::project_near(double x, double y, double radius) const {
+    // The foot of (x, y) lies at most half a step along from a sample.
+    const std::size_t best = nearest_sample(x, y, 0, samples_.size() - 1);
+    if (std::hypot(samples_[best].x - x, samples_[best].y - y) > radius + step_) {
+        return std::nullopt;
+    }
+    return refined(x, y, best);
 }
 
 Projection IndexedAlignment::project(double x, double y) const {

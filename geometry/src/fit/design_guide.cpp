@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace railodd::geometry::fit {
 
@@ -32,7 +33,12 @@ struct Sample {
 // The concentric curvature a guide asks for at reference point `at`, if it
 // runs beside it.
 Sample guided_curvature(const IndexedAlignment& g, const Pose& at) {
-    const Projection pr = g.project(at.x, at.y);
+    // Many samples are nowhere near: no Newton refine for them.
+    const std::optional<Projection> near = g.project_near(at.x, at.y, max_offset_m);
+    if (!near) {
+        return {};
+    }
+    const Projection& pr = *near;
     if (!(pr.s > 1e-6 && pr.s < g.length() - 1e-6) || std::abs(pr.offset) < min_offset_m ||
         std::abs(pr.offset) > max_offset_m) {
         return {};

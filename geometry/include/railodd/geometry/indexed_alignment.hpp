@@ -4,6 +4,7 @@
 // measurement over thousands of points stays linear in their number.
 #include "railodd/geometry/alignment.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace railodd::geometry {
@@ -34,6 +35,11 @@ public:
     // near a stretch (ordered points along a track), far cheaper than project().
     Projection project_within(double x, double y, double s_lo, double s_hi) const;
 
+    // project(), or nothing where the curve passes nowhere within `radius`
+    // of (x, y) (no sample within radius plus the sample step): the refine
+    // is spared for points that are not near.
+    std::optional<Projection> project_near(double x, double y, double radius) const;
+
     // Same as chord_stations(alignment(), ...), in O(log n + stations).
     std::vector<double> chord_stations(double s0, double s1, double max_sagitta) const;
 
@@ -57,8 +63,11 @@ private:
     void build_tree();
     double refine(double x, double y, double lo, double hi, double guess) const;
     Projection project_samples(double x, double y, std::size_t first, std::size_t last) const;
+    // The foot near sample `best`.
+    Projection refined(double x, double y, std::size_t best) const;
 
     Alignment alignment_;
+    double step_ = 0.0; // the largest gap between samples
     std::vector<Pose> starts_;
     std::vector<double> s_starts_;
     double length_ = 0.0;
