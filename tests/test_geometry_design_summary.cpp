@@ -32,6 +32,7 @@ TEST(DesignSummary, SharesElementsAndSignChangesOfAKnownAlignment) {
     EXPECT_NEAR(d.spiral_share, 0.15, 1e-9);
     EXPECT_NEAR(d.arc_share, 0.2, 1e-9);
     EXPECT_NEAR(d.elements_per_km, 3.5, 1e-9);
+    EXPECT_EQ(d.short_element_share, 0.0);
     EXPECT_NEAR(d.sign_changes_per_km, 0.5, 1e-9); // the reverse curve's one
     EXPECT_EQ(d.parallel_pairs, 0u);
 }
@@ -82,4 +83,12 @@ TEST(DesignSummary, ATrackLeavingItsNeighbourIsNoPair) {
     leg.start = {at.x - 3.0 * std::sin(at.hdg), at.y + 3.0 * std::cos(at.hdg), at.hdg, 0.0};
     leg.primitives = {make_arc(60.0, 1.0 / 300.0)};
     EXPECT_EQ(summarise_design({through, leg}).parallel_pairs, 0u);
+}
+
+TEST(DesignSummary, ElementsUnderAMetreAreCounted) {
+    // A curve entered through a half-metre transition, as a turnout's at its
+    // switch: one element in four under 1 m.
+    Alignment a;
+    a.primitives = {make_line(100), make_spiral(0.5, 0, 1.0 / 300), make_arc(50, 1.0 / 300), make_spiral(30, 1.0 / 300, 0)};
+    EXPECT_NEAR(summarise_design({a}).short_element_share, 0.25, 1e-12);
 }

@@ -17,6 +17,7 @@ namespace {
 
 constexpr double straight = 1.0 / 20000.0; // curvature below which a track is straight
 constexpr double curved = 1.0 / 5000.0;    // curvature from which parallel curves are compared
+constexpr double short_element_m = 1.0;
 constexpr double steady_m = 20.0, steady_offset_m = 0.5; // a parallel track keeps its offset this far either way
 
 struct Sample {
@@ -203,12 +204,13 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
     });
     DesignSummary out;
     double length_m = 0.0, spiral_m = 0.0, arc_m = 0.0;
-    std::size_t elements = 0;
+    std::size_t elements = 0, short_elements = 0;
     for (const IndexedAlignment& t : tracks) {
         for (const Primitive& p : t.alignment().primitives) {
             length_m += p.length;
             spiral_m += p.kind == PrimitiveKind::spiral ? p.length : 0.0;
             arc_m += p.kind == PrimitiveKind::arc ? p.length : 0.0;
+            short_elements += p.length < short_element_m ? 1 : 0;
         }
         elements += t.alignment().primitives.size();
     }
@@ -219,6 +221,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
     out.spiral_share = spiral_m / length_m;
     out.arc_share = arc_m / length_m;
     out.elements_per_km = static_cast<double>(elements) / out.length_km;
+    out.short_element_share = static_cast<double>(short_elements) / static_cast<double>(elements);
     SampleGrid grid;
     std::vector<Sample> curved_samples;
     for (std::size_t t = 0; t < tracks.size(); ++t) {
