@@ -187,9 +187,8 @@ private:
                     depends_[c].push_back(g);
                 } else if (!waits_on(c, g)) {
                     // The longer track waits on this one (through its
-                    // ties): this one, fitted first, guides it instead.
+                    // ties) already: this one, fitted first, guides it.
                     guide_[g].push_back(c);
-                    depends_[g].push_back(c);
                 }
             }
         }

@@ -42,7 +42,8 @@ public:
         double weight = 0.0, curvature = 0.0, at = 0.0;
     };
     Mean over(double a, double b) const;
-    // A guide's element joint where the prior holds: the chainage across
+    // A guide's element joint where the chain runs beside it at a steady
+    // offset (whether or not the prior holds there): the chainage across
     // from it, the guide's element kinds before and after it in this
     // chain's direction, and which run beside a guide it lies in.
     struct Joint {
@@ -68,10 +69,10 @@ private:
     GuideCurvature mirror() const;
 };
 
-// Each run beside a guide: the design's elements between two of the
-// guide's joints replaced by the guide's structure there (its kinds at its
-// knots, the curvatures solved), kept where that costs less
-// (design_guided.cpp).
+// Each of the guide's curves in a run beside it (the whole run where it
+// has none): the design's elements there replaced by the guide's structure
+// (its kinds at its knots, the curvatures solved), kept where that costs
+// less and moves no node far off (design_guided.cpp).
 FrameDesign take_guided_runs(const std::vector<FrameNode>& nodes, FrameDesign design, const DesignDpOptions& o);
 
 } // namespace railodd::geometry::fit

@@ -1,16 +1,15 @@
 // A parallel track's structure as a rival (issue 37 item 7): where a chain
-// runs beside a track fitted before it, its design over each of the
-// guide's curves is replaced by the guide's elements at the guide's knots,
-// and kept where that costs less (the same objective, the guide's prior
-// in it) and moves no node far off. The prior (design_guide.hpp) pulls the
-// curvature, but the search
-// places the knots from this chain's nodes alone, and on sparse nodes they
-// fall where the transition-length prior puts them, not across from the
-// neighbour's (VDE 8.2: transitions side by side 0.33-2.6x each other's
-// length at p10-p90), and the curves disagree along the transitions. Few
-// rivals are taken (VDE 8.2: 10 of 704 over all passes; most cost more, the
-// two tracks' nodes placing their transitions apart), but a knot taken is
-// held in the polish (design_fit.cpp hold_shared_knots).
+// runs beside a track fitted before it, its design over each of the guide's
+// curves is replaced by the guide's elements at the guide's knots, and kept
+// where that costs less (the same objective, the guide's prior in it) and
+// moves no node far off. The prior (design_guide.hpp) pulls the curvature,
+// but the search places the knots from this chain's nodes alone, and on
+// sparse nodes they fall where the transition-length prior puts them, not
+// across from the neighbour's (VDE 8.2: transitions side by side 0.33-2.6x
+// each other's length at p10-p90), and the curves disagree along the
+// transitions. Few rivals are taken (VDE 8.2: 10 of 704 over all passes;
+// most cost more, the two tracks' nodes placing their transitions apart),
+// but a knot taken is held in the polish (design_fit.cpp hold_shared_knots).
 #include "design_guide.hpp"
 
 #include "design_rules.hpp"
@@ -146,13 +145,19 @@ FrameDesign take_guided_runs(const std::vector<FrameNode>& nodes, FrameDesign de
     if (!o.guide || design.elements.empty()) {
         return design;
     }
+    double design_worst = worst(design, nodes);
     const auto try_rival = [&](const std::optional<std::vector<FrameElement>>& st) {
         if (!st) {
             return;
         }
         FrameDesign d = solve_structure(nodes, *st, o);
-        if (d.cost < design.cost && worst(d, nodes) <= std::max(worst(design, nodes), max_guided_z)) {
+        if (!(d.cost < design.cost)) {
+            return;
+        }
+        const double d_worst = worst(d, nodes);
+        if (d_worst <= std::max(design_worst, max_guided_z)) {
             design = std::move(d);
+            design_worst = d_worst;
         }
     };
     const std::vector<Joint>& all = o.guide->joints();
