@@ -4,7 +4,7 @@
 #include "design_dp.hpp"
 #include "design_guide.hpp"
 #include "design_pass.hpp"
-#include "end_constraint.hpp"
+#include "design_polish.hpp"
 #include "outlier_nodes.hpp"
 #include "reference_line.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
@@ -44,12 +44,6 @@ constexpr int search_rounds = 2;
 // A parallel track's curvature held as firmly as a 100 m stretch of this
 // chain's own curvature known to 2e-5 1/m (per metre per (1/m)^2).
 constexpr double guide_weight = 1.0 / (100.0 * 2e-5 * 2e-5);
-// A knot shared with a parallel track held in the polish where the search
-// put it: a metre along costs as much as a node one sigma off.
-constexpr double shared_knot_weight = 1.0;
-// A knot within this of a guide's joint is the guide's: carried from pass
-// to pass, it moves by rounding.
-constexpr double shared_knot_m = 0.25;
 
 // The parameters the design spent on the nodes: the start state and each
 // element's length, a transition's slope besides.
@@ -235,132 +229,6 @@ DesignPass run_pass(const ReferenceLine& ref, const std::vector<Point2>& p, cons
     pass.sigma = sigma;
     pass.measure();
     return pass;
-}
-
-// The design as clothoids whose knots keep its structure (lines at zero
-// curvature, an arc's two knots one variable, a transition meeting a line or
-// another transition at zero, a tied end at its tie's curvature), every
-// length free: what the exact polish moves.
-CurvatureModel structure_model(const DesignPass& pass, const std::optional<Pose>& start, const std::optional<Pose>& end) {
-    const std::vector<FrameElement> el = on_map(*pass.frame, pass.design);
-    CurvatureModel m;
-    m.start = start.value_or(pass.alignment.start);
-    m.start_free = !start;
-    const auto is = [&](std::size_t j, ElementKind k) { return j < el.size() && el[j].kind == k; };
-    if (is(0, ElementKind::line) || start) {
-        m.knot_var.push_back(-1);
-        m.knot_fixed.push_back(start ? start->curvature : 0.0);
-    } else {
-        m.curv.push_back(el[0].k0);
-        m.knot_var.push_back(0);
-        m.knot_fixed.push_back(0.0);
-    }
-    for (std::size_t j = 0; j < el.size(); ++j) {
-        const double len = std::max(el[j].s1 - el[j].s0, 0.5);
-        const bool last = j + 1 == el.size();
-        if (last && end) {
-            m.push_segment(len, true, -1, end->curvature);
-        } else if (el[j].kind == ElementKind::line || is(j + 1, ElementKind::line) ||
-                   (el[j].kind == ElementKind::transition && is(j + 1, ElementKind::transition))) {
-            m.push_segment(len, true, -1, 0.0);
-        } else if (el[j].kind == ElementKind::arc && m.knot_var.back() >= 0) {
-            m.push_segment(len, true, m.knot_var.back());
-        } else {
-            m.curv.push_back(el[j].k1);
-            m.push_segment(len, true, static_cast<int>(m.curv.size()) - 1);
-        }
-    }
-    return m;
-}
-
-// The pass's own alignment, moved onto its tied end (meet_end): from the
-// frame it misses by up to millimetres. Not where that brings the nodes
-// further off.
-FitResult unpolished(const DesignPass& pass, CurvatureModel m, const std::vector<Point>& all, double sigma,
-                     const std::optional<Pose>& end) {
-    FitResult before{pass.alignment, measure_fit(pass.alignment, all)};
-    if (!end || !meet_end(m, *end)) {
-        return before;
-    }
-    FitResult met{m.to_alignment(), {}};
-    met.quality = measure_fit(met.alignment, all);
-    const bool kept = met.quality.max_m <= before.quality.max_m + 0.5 * sigma && !loops_back(met.alignment, all);
-    return kept ? met : before;
-}
-
-// The knots the design took from a parallel track (design_guided.cpp) held
-// where the search put them, within about a metre: on sparse nodes the
-// polish slid them along a flat valley (Liechtenstein: a transition 14 m
-// along from its neighbour's), and the two tracks' curves no longer matched.
-void hold_shared_knots(const DesignPass& pass, const CurvatureModel& m, SolveOptions& so) {
-    const auto& el = pass.design.elements;
-    const auto& joints = pass.options.guide->joints();
-    so.knot_at.assign(m.segments() + 1, 0.0);
-    so.knot_weight.assign(m.segments() + 1, 0.0);
-    double at = 0.0;
-    bool any = false;
-    for (std::size_t k = 1; k < el.size(); ++k) {
-        at += m.lengths[k - 1];
-        const bool shared = std::any_of(joints.begin(), joints.end(),
-                                        [&](const GuideCurvature::Joint& j) { return std::abs(j.t - el[k].s0) < shared_knot_m; });
-        so.knot_at[k] = at;
-        so.knot_weight[k] = shared ? shared_knot_weight : 0.0;
-        any = any || shared;
-    }
-    if (!any) {
-        // No rows at all: the Jacobian is dense, a row per knot of a long chain.
-        so.knot_at.clear();
-        so.knot_weight.clear();
-    }
-}
-
-// A few Levenberg-Marquardt steps on exact clothoids with the structure
-// fixed: what the frame's small-angle model left (second order in the
-// offsets, the lengths along a curve). The alignment kept and its distances
-// to the nodes (`all`, the same nodes as p).
-FitResult polish(const DesignPass& pass, const std::vector<Point2>& p, const std::vector<Point>& all,
-                 const std::vector<double>& weight, double sigma, const std::optional<Pose>& start,
-                 const std::optional<Pose>& end) {
-    CurvatureModel m = structure_model(pass, start, end);
-    const CurvatureModel unsolved = m;
-    SolveOptions so;
-    so.sigma_m = sigma;
-    so.pin_first = !start;
-    so.pin_last = true;
-    so.end = end;
-    // A tied end is first reached by a shrinking share of its gap per step
-    // (least_squares.cpp): more steps where there is one.
-    so.max_iterations = end ? 25 : 15;
-    so.geodesic_acceleration = true;
-    for (const double w : weight) {
-        so.point_scale.push_back(std::sqrt(w));
-    }
-    so.abandon_loops = true;
-    const auto& el = pass.design.elements;
-    so.transition_prior.assign(el.size(), 0.0);
-    for (std::size_t j = 1; j + 1 < so.transition_prior.size(); ++j) {
-        so.transition_prior[j] = el[j].kind == ElementKind::transition ? transition_prior : 0.0;
-    }
-    if (pass.options.guide) {
-        for (const FrameElement& e : el) {
-            const GuideCurvature::Mean g = pass.options.guide->over(e.s0, e.s1);
-            so.guide_weight.push_back(g.weight);
-            so.guide_curvature.push_back(g.curvature);
-            so.guide_at.push_back(e.s1 > e.s0 ? std::clamp((g.at - e.s0) / (e.s1 - e.s0), 0.0, 1.0) : 0.5);
-        }
-        hold_shared_knots(pass, m, so);
-    }
-    const SolveReport r = solve(m, p, so);
-    FitResult before = unpolished(pass, unsolved, all, sigma, end);
-    if (!r.end_met || r.gave_up) {
-        return before;
-    }
-    // Kept only where it brings the nodes no further off: a solve that wandered
-    // (a loop at the curvature bound, a tie pulling across a gap) is not.
-    FitResult polished{m.to_alignment(), {}};
-    polished.quality = measure_fit(polished.alignment, all);
-    const bool kept = polished.quality.max_m <= before.quality.max_m + 0.5 * sigma && !loops_back(polished.alignment, all);
-    return kept ? polished : before;
 }
 
 // The first pass's noise and weights: the outlier scan's (outlier_nodes.hpp),

@@ -533,11 +533,12 @@ double total_length(const CurvatureModel& m) {
     return sum;
 }
 
-void clamp_model(CurvatureModel& m, double min_length, double max_length) {
+void clamp_model(CurvatureModel& m, double min_length, const std::vector<double>& min_at, double max_length) {
     constexpr double max_curvature = 0.1;
     for (std::size_t j = 0; j < m.segments(); ++j) {
         if (m.length_free[j]) {
-            m.lengths[j] = std::clamp(m.lengths[j], min_length, std::max(min_length, max_length));
+            const double floor = j < min_at.size() ? std::max(min_length, min_at[j]) : min_length;
+            m.lengths[j] = std::clamp(m.lengths[j], floor, std::max(floor, max_length));
         }
     }
     for (double& k : m.curv) {
