@@ -201,3 +201,26 @@ TEST(GeometryCornerFit, BranchMeetingItsTrackAtAnAngleIsSplicedExactly) {
         EXPECT_LE(e.quality.max_m, 0.5);
     }
 }
+
+// A curve mapped densely (R 200 m, nodes 2 m apart, ±3 cm of scatter),
+// tied to its switch at the start: a corner at every node was a few
+// decimetres long (Cologne's spliced ends: 24 % of their elements under a
+// metre). The corners stand on the vertices Douglas-Peucker keeps at half
+// the bound, every node still within it.
+TEST(GeometryCornerFit, ADenselyMappedCurveTakesFewCorners) {
+    std::vector<Point> pts;
+    const double r = 200.0;
+    for (int i = 0; i <= 40; ++i) {
+        const double t = 2.0 * i / r, e = 0.03 * ((i * 7) % 5 - 2) / 2.0;
+        pts.push_back({(r - e) * std::sin(t), r - (r - e) * std::cos(t)});
+    }
+    const Alignment a = corner_polyline(pts, Pose{0.0, 0.0, 0.0, 0.0}, std::nullopt, {});
+    expect_g2(a);
+    EXPECT_LE(max_distance(a, pts), 0.25 + 1e-9);
+    EXPECT_LE(a.primitives.size(), 30u); // 121 with a corner at every node, 115 under a metre
+    for (const Primitive& p : a.primitives) {
+        // A straight the corners' rooms leave between them can be short
+        // (here one of 2 mm); the corners are not.
+        EXPECT_TRUE(p.kind == PrimitiveKind::line || p.length >= 1.0) << p.length;
+    }
+}
