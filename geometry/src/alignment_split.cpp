@@ -20,6 +20,11 @@ Primitive part_of(const Primitive& p, double ds0, double ds1) {
     return q;
 }
 
+// A cut this close to a knot is at the knot: a cut placed on one (a switch
+// taken at its through track's knot, track_fit.cpp) and moved with the
+// chain by rounding must not leave a piece of 1e-13 m.
+constexpr double at_knot_m = 1e-9;
+
 } // namespace
 
 std::vector<Alignment> split_alignment(const Alignment& a, const std::vector<double>& cuts) {
@@ -30,8 +35,8 @@ std::vector<Alignment> split_alignment(const Alignment& a, const std::vector<dou
     double s0 = 0.0;
     for (const Primitive& p : a.primitives) {
         double from = 0.0; // within p
-        while (next_cut < cuts.size() && cuts[next_cut] < s0 + p.length) {
-            const double ds = std::max(cuts[next_cut] - s0, from);
+        while (next_cut < cuts.size() && cuts[next_cut] < s0 + p.length - at_knot_m) {
+            const double ds = cuts[next_cut] - s0 < from + at_knot_m ? from : cuts[next_cut] - s0;
             if (ds > from) {
                 out.back().primitives.push_back(part_of(p, from, ds));
             }
