@@ -25,18 +25,24 @@ constexpr double shared_knot_m = 0.25;
 constexpr double collapsed_arc_m = 1.0;
 
 // Per element, the shortest length the polish may give it: a transition
-// at a tied end switch_transition_m, else the solver's own floor.
+// at a tied end switch_transition_m (a quarter of a shorter chain), else
+// the solver's own floor.
 std::vector<double> length_floors(const DesignPass& pass, const std::optional<Pose>& start,
                                   const std::optional<Pose>& end) {
     const auto& el = pass.design.elements;
-    std::vector<double> floor(el.size(), SolveOptions{}.min_length_m);
+    const double solver = SolveOptions{}.min_length_m;
+    std::vector<double> floor(el.size(), solver);
+    if (el.empty()) {
+        return floor;
+    }
+    const double held = std::max(solver, std::min(switch_transition_m, 0.25 * (el.back().s1 - el.front().s0)));
     const auto at_switch = [&](std::size_t j) {
-        floor[j] = el[j].kind == ElementKind::transition ? switch_transition_m : floor[j];
+        floor[j] = el[j].kind == ElementKind::transition ? held : floor[j];
     };
-    if (start && !el.empty()) {
+    if (start) {
         at_switch(0);
     }
-    if (end && !el.empty()) {
+    if (end) {
         at_switch(el.size() - 1);
     }
     return floor;
