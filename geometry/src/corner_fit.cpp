@@ -29,6 +29,9 @@ constexpr double same_point_m = 1e-6;
 // next node.
 constexpr double max_transition_m = 30.0;
 constexpr double max_transition_turn = 0.2;
+// Rounds of taking dropped nodes back before the corners stand on every
+// vertex (assemble_simplest).
+constexpr int max_simplify_rounds = 16;
 
 struct Vertex {
     Point p;
@@ -353,7 +356,12 @@ Alignment assemble_simplest(const Path& full, const std::optional<Pose>& start, 
             at.push_back(i);
         }
     }
-    for (;;) {
+    // Each round takes back every node beyond the bound; after a few (the
+    // extracts need at most a handful), every vertex, as before.
+    for (int round = 0;; ++round) {
+        if (round == max_simplify_rounds) {
+            keep.assign(keep.size(), 1);
+        }
         Alignment a = assemble(kept_part(full, keep), start, o);
         const std::vector<double> d = distances(a, mapped);
         bool taken = false;
@@ -363,7 +371,7 @@ Alignment assemble_simplest(const Path& full, const std::optional<Pose>& start, 
                 taken = true;
             }
         }
-        if (!taken) {
+        if (!taken || round >= max_simplify_rounds) {
             return a;
         }
     }
