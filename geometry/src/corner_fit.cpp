@@ -251,10 +251,10 @@ std::vector<char> douglas_peucker(const std::vector<Vertex>& v, double tolerance
         const auto [a, b] = spans.back();
         spans.pop_back();
         const double len = dist(v[a].p, v[b].p);
+        const double dx = v[b].p.x - v[a].p.x, dy = v[b].p.y - v[a].p.y;
         double worst = 0.0;
         std::size_t at = a;
         for (std::size_t i = a + 1; i < b; ++i) {
-            const double dx = v[b].p.x - v[a].p.x, dy = v[b].p.y - v[a].p.y;
             const double qx = v[i].p.x - v[a].p.x, qy = v[i].p.y - v[a].p.y;
             const double d = len > same_point_m ? std::abs(dx * qy - dy * qx) / len : std::hypot(qx, qy);
             if (d > worst) {
@@ -358,10 +358,7 @@ Alignment assemble_simplest(const Path& full, const std::optional<Pose>& start, 
     }
     // Each round takes back every node beyond the bound; after a few (the
     // extracts need at most a handful), every vertex, as before.
-    for (int round = 0;; ++round) {
-        if (round == max_simplify_rounds) {
-            keep.assign(keep.size(), 1);
-        }
+    for (int round = 0; round < max_simplify_rounds; ++round) {
         Alignment a = assemble(kept_part(full, keep), start, o);
         const std::vector<double> d = distances(a, mapped);
         bool taken = false;
@@ -371,10 +368,11 @@ Alignment assemble_simplest(const Path& full, const std::optional<Pose>& start, 
                 taken = true;
             }
         }
-        if (!taken || round >= max_simplify_rounds) {
+        if (!taken) {
             return a;
         }
     }
+    return assemble(full, start, o);
 }
 
 } // namespace

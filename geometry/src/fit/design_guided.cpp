@@ -9,7 +9,7 @@
 // each other's length at p10-p90), and the curves disagree along the
 // transitions. Few rivals are taken (VDE 8.2: 10 of 704 over all passes;
 // most cost more, the two tracks' nodes placing their transitions apart),
-// but a knot taken is held in the polish (design_fit.cpp hold_shared_knots).
+// but a knot taken is held in the polish (design_polish.cpp hold_shared_knots).
 #include "design_guide.hpp"
 
 #include "design_rules.hpp"

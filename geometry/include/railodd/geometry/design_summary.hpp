@@ -18,9 +18,8 @@ struct DesignSummary {
     double spiral_share = 0.0; // of the length
     double arc_share = 0.0;
     double elements_per_km = 0.0;
-    // Elements under 1 m, as a share of all (issue 37 asks under 0.5 %): a
-    // turnout's curve begun through a half-metre transition, an arc the
-    // polish shrank between two transitions.
+    // Elements under 1 m, as a share of all (issue 37 asks under 0.5 %):
+    // mostly corners on nodes a few metres apart (docs/BENCHMARKS.md).
     double short_element_share = 0.0;
     double sign_changes_per_km = 0.0; // of curvature (|k| > 1/20,000 m), sampled every 5 m
     // Curved points (|k| > 1/5,000 m, every 10 m) with a parallel track 3-6 m
