@@ -27,6 +27,8 @@ constexpr double reference_step_m = 2.0;
 // against how far noise takes a node (chain_fit.cpp). The scan's 0.3 m
 // prior there built half the sparse truth routes at 2 m by corners.
 constexpr double untold_scatter_max_m = 3.0;
+// The noise a chain starts at where the scan cannot tell it.
+constexpr double untold_sigma_m = 0.3;
 constexpr double smoothing_m = 30.0;
 // Calibrated on the truth bench (bench_alignment_truth --method design):
 // 1.2 ln n per parameter (routes beyond issue 37's deviation limits, 300 per
@@ -243,17 +245,17 @@ struct FirstGuess {
     std::optional<double> few;
 };
 FirstGuess first_guess(const std::vector<Point2>& p, std::vector<double>& weight) {
-    constexpr std::size_t told = 12, few = 3;
-    constexpr double prior_m = 0.3, prior_nodes = 2.0;
+    constexpr std::size_t told_nodes = 12, some_nodes = 3;
+    constexpr double prior_m = untold_sigma_m, prior_nodes = 2.0;
     const OutlierScan scan = find_outlier_nodes(p);
     for (std::size_t i = 0; i < p.size(); ++i) {
         weight[i] = scan.outlier[i] ? 0.0 : 1.0;
     }
-    if (scan.tested >= told) {
+    if (scan.tested >= told_nodes) {
         return {std::clamp(scan.noise_sigma_m, 0.05, 5.0), std::nullopt};
     }
-    if (scan.tested < few) {
-        return {std::nullopt, p.size() < told ? std::optional<double>(prior_m) : std::nullopt};
+    if (scan.tested < some_nodes) {
+        return {std::nullopt, p.size() < told_nodes ? std::optional<double>(prior_m) : std::nullopt};
     }
     const double n = static_cast<double>(scan.tested);
     const double s2 = scan.noise_sigma_m * scan.noise_sigma_m;
@@ -418,7 +420,7 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     // Untold, the scale starts at 0.3 m and the residuals' own takes over.
     const FirstGuess first = first_guess(p, weight);
     const std::optional<double> scatter = first.sigma;
-    const double guess = scatter.value_or(0.3);
+    const double guess = scatter.value_or(untold_sigma_m);
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
