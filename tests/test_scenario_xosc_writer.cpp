@@ -193,6 +193,22 @@ TEST(ScenarioXoscWriter, TriggersTheWalkerByEgoDistanceAndStopsByTimeOrEnd) {
               "180");
 }
 
+// The end stops the run only once the ego has run nearly its whole way
+// there (the ego's run less the end's 5 m tolerance and 10 m): a run round
+// a tram's turning loop passed within 5 m of its end a tenth of the way in
+// (Munich), and the distance alone ended it before its anchor.
+TEST(ScenarioXoscWriter, TheEndStopsTheRunOnlyAfterTheEgoRanItsWay) {
+    auto sc = scenario();
+    sc.ego_run_m = 160.0;
+    const auto doc = parse(xosc_text(sc));
+    const std::string group = "/OpenSCENARIO/Storyboard/StopTrigger/ConditionGroup[Condition/@name='EgoAtEnd']";
+    const auto conditions = doc.select_nodes((group + "/Condition").c_str());
+    ASSERT_EQ(conditions.size(), 2u) << "near the end AND far enough along";
+    EXPECT_EQ(attribute(doc, group + "/Condition[@name='EgoRanItsWay']//TraveledDistanceCondition", "value"), "145");
+    EXPECT_EQ(attribute(doc, group + "/Condition[@name='EgoRanItsWay']//TriggeringEntities/EntityRef", "entityRef"),
+              "Ego");
+}
+
 TEST(ScenarioXoscWriter, WithoutMovingActorsTheActKeepsAnEmptyEgoGroup) {
     auto sc = scenario();
     sc.others.clear();

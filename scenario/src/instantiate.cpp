@@ -376,6 +376,7 @@ ScenarioRecord instantiate(const TemplateContext& ctx, const Row& row, const std
     }
     sc.ego.speed_mps = speed.kmh / 3.6;
     sc.ego_end = ctx.lines.at(a.line, a.end_chainage);
+    sc.ego_run_m = a.end_chainage - a.start_chainage;
     sc.stop_time_s = std::ceil((a.end_chainage - a.start_chainage) / std::max(sc.ego.speed_mps, 1.0)) + 30.0;
     rec.assets.emplace_back("Ego", ego_asset.id);
     cover_asset(ctx, ego_asset, rec.odd_elements);

@@ -277,13 +277,18 @@ bool ego_maneuver_group(pugi::xml_node act, const Context& cx) {
     return true;
 }
 
-// Condition groups are OR-ed: the run stops at stop_time_s or at ego_end.
+// Condition groups are OR-ed: the run stops at stop_time_s or at ego_end,
+// once the ego has run nearly its whole way there: a run round a tram's
+// turning loop passes within the tolerance of its end before it reaches its
+// anchor (Munich: 4.6 m, at a tenth of its run), and a distance alone
+// ended it there.
 void end_conditions(pugi::xml_node trigger, const Context& cx) {
+    constexpr double run_slack_m = 10.0;
     const ConcreteScenario& sc = cx.scenario();
     simulation_time_condition(trigger.append_child("ConditionGroup"), "TimeOut", "greaterThan", sc.stop_time_s);
     if (sc.ego_end) {
-        pugi::xml_node distance =
-            ego_condition(trigger.append_child("ConditionGroup"), "EgoAtEnd", cx).append_child("DistanceCondition");
+        pugi::xml_node group = trigger.append_child("ConditionGroup");
+        pugi::xml_node distance = ego_condition(group, "EgoAtEnd", cx).append_child("DistanceCondition");
         if (cx.rev_minor() < 1) {
             attr(distance, "alongRoute", "false"); // required in 1.0, deprecated since
         }
@@ -291,6 +296,8 @@ void end_conditions(pugi::xml_node trigger, const Context& cx) {
         attr(distance, "freespace", "false");
         attr(distance, "rule", "lessThan");
         position(distance, *sc.ego_end);
+        pugi::xml_node run = ego_condition(group, "EgoRanItsWay", cx).append_child("TraveledDistanceCondition");
+        attr(run, "value", std::max(0.0, sc.ego_run_m - ego_end_tolerance_m - run_slack_m));
     }
 }
 

@@ -127,6 +127,7 @@ struct ConcreteScenario {
     std::vector<std::pair<std::string, std::string>> conditions;
     double stop_time_s = 60.0; // simulation stops at this time ...
     std::optional<LanePlacement> ego_end; // ... or when the ego reaches this place
+    double ego_run_m = 0.0;               // along the track from its start to ego_end
     // The ego's run sampled along its line, first the start, last the end:
     // for players that follow positions rather than route over the map
     // (ScenarioRunner: CARLA's router plans on driving lanes only). Empty
