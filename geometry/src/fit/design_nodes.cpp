@@ -299,11 +299,13 @@ bool zigzag(const DesignPass& pass, std::size_t i, double far) {
 void add_pair_swaps(const DesignPass& pass, std::size_t i, double far, std::vector<Trial>& trials) {
     const auto& q = pass.nodes;
     const std::size_t n = q.size();
-    std::size_t a = i, b = i; // the left-out run [a, b]
-    while (a > 1 && q[a - 1].w == 0.0 && b - a < 2) {
+    // The left-out run [a, b] holding i; three or more left out side by
+    // side are a stretch the design misses, not two strays' neighbours.
+    std::size_t a = i, b = i;
+    while (a > 1 && q[a - 1].w == 0.0 && i - a < 2) {
         --a;
     }
-    while (b + 2 < n && q[b + 1].w == 0.0 && b - a < 1) {
+    while (b + 2 < n && q[b + 1].w == 0.0 && b - i < 2) {
         ++b;
     }
     if (b - a > 1) {
