@@ -7,6 +7,7 @@
 #include "design_pass.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -222,6 +223,27 @@ bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach) {
     return (!pass.options.start && i <= reach) || (!pass.options.end && i + reach + 1 >= pass.nodes.size());
 }
 
+// Node i's distance from Lagrange's cubic through nodes k (frame); 0 where
+// two of them share a chainage.
+double cubic_residual(const std::vector<FrameNode>& q, const std::array<std::size_t, 4>& k, std::size_t i) {
+    double z = 0.0;
+    for (std::size_t a = 0; a < 4; ++a) {
+        double l = 1.0;
+        for (std::size_t b = 0; b < 4; ++b) {
+            const double d = q[k[a]].t - q[k[b]].t;
+            if (b == a) {
+                continue;
+            }
+            if (!(std::abs(d) > 1e-6)) {
+                return 0.0;
+            }
+            l *= (q[i].t - q[k[b]].t) / d;
+        }
+        z += l * q[k[a]].z;
+    }
+    return std::abs(q[i].z - z);
+}
+
 // Node i's distance from the cubic through the two kept nodes either side
 // of it (frame); 0 where it has fewer.
 double trend_residual(const DesignPass& pass, std::size_t i) {
@@ -243,22 +265,7 @@ double trend_residual(const DesignPass& pass, std::size_t i) {
     if (k.size() < 4) {
         return 0.0;
     }
-    double z = 0.0; // Lagrange's cubic through the four, at node i
-    for (std::size_t a = 0; a < 4; ++a) {
-        double l = 1.0;
-        for (std::size_t b = 0; b < 4; ++b) {
-            const double d = q[k[a]].t - q[k[b]].t;
-            if (b == a) {
-                continue;
-            }
-            if (!(std::abs(d) > 1e-6)) {
-                return 0.0;
-            }
-            l *= (q[i].t - q[k[b]].t) / d;
-        }
-        z += l * q[k[a]].z;
-    }
-    return std::abs(q[i].z - z);
+    return cubic_residual(q, {k[0], k[1], k[2], k[3]}, i);
 }
 
 // Whether node i lies off the trend of its kept neighbours. In a tight
@@ -315,14 +322,24 @@ void add_pair_swaps(const DesignPass& pass, std::size_t i, double far, std::vect
     for (std::size_t k = a; k <= b; ++k) {
         run.push_back(k);
     }
-    const auto pair_strays = [&](std::size_t j) {
-        return j >= 2 && j + 2 < n && q[j].w > 0.0 && q[j + 1].w > 0.0 && (bent_to(pass, j) || bent_to(pass, j + 1)) &&
-               off_chord(pass, j, j + 1, far);
+    // Both off the cubic through the two nodes either side of the pair, the
+    // run's taken as good, by twice the biweight cut: on sparse nodes a good
+    // pair in a curve lies off its chord and the design bends between them
+    // (a guided sparse track, ParallelTracks test seed 2002: a good pair left
+    // out, 9.0 m off); off the curve's cubic it does not.
+    const auto off_cubic = [&](std::size_t j) {
+        const std::array<std::size_t, 4> k{j - 2, j - 1, j + 2, j + 3};
+        return std::all_of(k.begin() + 2, k.end(), [&](std::size_t m) { return q[m].w > 0.0; }) &&
+               cubic_residual(q, k, j) > 2.0 * far && cubic_residual(q, k, j + 1) > 2.0 * far;
     };
-    if (b + 3 < n && pair_strays(b + 1)) {
+    const auto pair_strays = [&](std::size_t j) {
+        return j >= 2 && j + 3 < n && q[j].w > 0.0 && q[j + 1].w > 0.0 && (bent_to(pass, j) || bent_to(pass, j + 1)) &&
+               off_chord(pass, j, j + 1, far) && off_cubic(j);
+    };
+    if (b + 4 < n && pair_strays(b + 1)) {
         trials.push_back({{b + 1, b + 2}, run});
     }
-    if (a >= 3 && pair_strays(a - 2)) {
+    if (a >= 4 && pair_strays(a - 2)) {
         trials.push_back({{a - 2, a - 1}, run});
     }
 }
