@@ -293,16 +293,20 @@ bool zigzag(const DesignPass& pass, std::size_t i, double far) {
 }
 
 // Two strays side by side that the design follows, and the good nodes
-// beside them it left out: the left-out run holding i (up to two nodes)
-// taken back and the two kept nodes next to it on either side left out,
-// where the design bends to one of them and both lie off the chord of
-// their neighbours. Swapped a node at a time, the other stray still pulls
-// the design off the node taken back (dense truth seed 1024 at 0.3 m, 32
-// km: two strays followed by curves of R 21 m, the good nodes before them
-// left out, 9.0 m off). No bump or zigzag test as for strays the design
-// follows alone (stray_trials): a pair 8.3 and 3.9 m off one side turns
-// both ways, and the trial must still cost less and follow the nodes
-// taken back.
+// before them it left out: the left-out run holding i (up to two nodes)
+// taken back and the two kept nodes after it left out, where both lie off
+// the chord of their neighbours and off the cubic through the run and the
+// two kept nodes after the pair, and the design bends to one of them.
+// Swapped a node at a time, the other stray still pulls the design off the
+// node taken back (dense truth seed 1024 at 0.3 m, 32 km: two strays
+// followed by curves of R 21 m, the good nodes before them left out, 9.0 m
+// off). No bump or zigzag test as for strays the design follows alone
+// (stray_trials): a pair 8.3 and 3.9 m off one side turns both ways. The
+// cubic, by twice the biweight cut: on sparse nodes a good pair in a curve
+// lies off its chord and the design bends between them (a guided sparse
+// track, ParallelTracks test seed 2002: a good pair left out, 9.0 m off).
+// Only the pair after the run: the cubic wants kept nodes on the pair's far
+// side, and a pair before the run was never tried by it.
 void add_pair_swaps(const DesignPass& pass, std::size_t i, double far, std::vector<Trial>& trials) {
     const auto& q = pass.nodes;
     const std::size_t n = q.size();
@@ -315,32 +319,19 @@ void add_pair_swaps(const DesignPass& pass, std::size_t i, double far, std::vect
     while (b + 2 < n && q[b + 1].w == 0.0 && b - i < 2) {
         ++b;
     }
-    if (b - a > 1) {
+    const std::size_t j = b + 1; // the pair j, j + 1
+    if (b - a > 1 || !(j + 3 < n) || !(q[j].w > 0.0 && q[j + 1].w > 0.0 && q[j + 2].w > 0.0 && q[j + 3].w > 0.0)) {
         return;
     }
-    std::vector<std::size_t> run;
-    for (std::size_t k = a; k <= b; ++k) {
-        run.push_back(k);
-    }
-    // Both off the cubic through the two nodes either side of the pair, the
-    // run's taken as good, by twice the biweight cut: on sparse nodes a good
-    // pair in a curve lies off its chord and the design bends between them
-    // (a guided sparse track, ParallelTracks test seed 2002: a good pair left
-    // out, 9.0 m off); off the curve's cubic it does not.
-    const auto off_cubic = [&](std::size_t j) {
-        const std::array<std::size_t, 4> k{j - 2, j - 1, j + 2, j + 3};
-        return std::all_of(k.begin() + 2, k.end(), [&](std::size_t m) { return q[m].w > 0.0; }) &&
-               cubic_residual(q, k, j) > 2.0 * far && cubic_residual(q, k, j + 1) > 2.0 * far;
-    };
-    const auto pair_strays = [&](std::size_t j) {
-        return j >= 2 && j + 3 < n && q[j].w > 0.0 && q[j + 1].w > 0.0 && (bent_to(pass, j) || bent_to(pass, j + 1)) &&
-               off_chord(pass, j, j + 1, far) && off_cubic(j);
-    };
-    if (b + 4 < n && pair_strays(b + 1)) {
-        trials.push_back({{b + 1, b + 2}, run});
-    }
-    if (a >= 4 && pair_strays(a - 2)) {
-        trials.push_back({{a - 2, a - 1}, run});
+    const std::array<std::size_t, 4> k{j - 2, j - 1, j + 2, j + 3};
+    // Cheapest tests first: bent_to walks the design's elements.
+    if (off_chord(pass, j, j + 1, far) && cubic_residual(q, k, j) > 2.0 * far && cubic_residual(q, k, j + 1) > 2.0 * far &&
+        (bent_to(pass, j) || bent_to(pass, j + 1))) {
+        std::vector<std::size_t> run;
+        for (std::size_t m = a; m <= b; ++m) {
+            run.push_back(m);
+        }
+        trials.push_back({{j, j + 1}, run});
     }
 }
 
