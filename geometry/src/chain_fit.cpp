@@ -55,20 +55,41 @@ bool misses(const EndMiss& m) {
     return m.gap_m > max_gap_m || m.heading_rad > max_heading_rad || m.curvature > max_curvature;
 }
 
-// The fit with free ends, each tied end's stretch rebuilt by corners; the
-// free fit's strays in *strays.
-ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& o, const std::vector<IndexedAlignment>& guides, std::vector<std::size_t>* strays) {
-    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
-    *strays = std::move(r.quality.strays);
-    ChainFit f{std::move(r.alignment), ChainMethod::spliced, 0};
+// The free fit with each tied end's stretch rebuilt (tie_splice.hpp): by a
+// few curves of design passing the nodes within `tolerance`, else corners.
+ChainFit spliced(const Alignment& free_fit, const std::vector<Point>& p, const std::optional<Pose>& start,
+                 const std::optional<Pose>& end, double tolerance) {
+    ChainFit f{free_fit, ChainMethod::spliced, 0};
     if (start) {
-        f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options);
+        f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options, tolerance);
         ++f.spliced_ends;
     }
     if (end) {
-        f.alignment = splice_end(f.alignment, p, *end, splice_length_m, corner_options);
+        f.alignment = splice_end(f.alignment, p, *end, splice_length_m, corner_options, tolerance);
         ++f.spliced_ends;
+    }
+    return f;
+}
+
+double worst_distance(const Alignment& a, const std::vector<Point>& p) {
+    return loops_back(a, p) ? std::numeric_limits<double>::infinity() : measure_fit(a, p).max_m;
+}
+
+// The fit with free ends, its tied stretches spliced on; its strays in
+// *strays and its largest node distance in *worst. Splices of design are
+// tried first (within the chain's limit); where the chain then strays
+// further than the tied fit did (`tied_worst`), corners, which follow
+// every node within 0.25 m.
+ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
+                     const FitOptions& o, const std::vector<IndexedAlignment>& guides, double limit,
+                     double tied_worst, std::vector<std::size_t>* strays, double* worst) {
+    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
+    *strays = std::move(r.quality.strays);
+    ChainFit f = spliced(r.alignment, p, start, end, limit);
+    *worst = worst_distance(f.alignment, p);
+    if (*worst >= tied_worst) {
+        f = spliced(r.alignment, p, start, end, 0.0);
+        *worst = worst_distance(f.alignment, p);
     }
     return f;
 }
@@ -136,19 +157,19 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m, r.quality.outliers};
     std::vector<std::size_t> strays = r.quality.strays;
     const double reach = noise_reach(p.size(), r.quality);
+    const double limit = fallback_deviation_m + reach;
     if ((start || end) && worst > retry_deviation_m + reach) {
         std::vector<std::size_t> free_strays;
-        ChainFit s = spliced_fit(p, start, end, o, guides, &free_strays);
+        double m = 0.0;
+        ChainFit s = spliced_fit(p, start, end, o, guides, limit, worst, &free_strays, &m);
         s.noise_sigma_m = best.noise_sigma_m;
         s.outliers = best.outliers;
-        const double m = loops_back(s.alignment, p) ? std::numeric_limits<double>::infinity() : measure_fit(s.alignment, p).max_m;
         if (m < worst) {
             best = std::move(s);
             worst = m;
             strays = std::move(free_strays);
         }
     }
-    const double limit = fallback_deviation_m + reach;
     if (worst > limit && std::isfinite(worst) && patch(best, p, strays, limit, start, end, o, guides)) {
         worst = limit;
     }
@@ -166,11 +187,11 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     // stretch is rebuilt from the fit's pose there to the tied pose.
     if (best.method == ChainMethod::railway || best.method == ChainMethod::patched) {
         if (start && misses(start_miss(best.alignment, *start))) {
-            best.alignment = splice_start(best.alignment, p, *start, splice_length_m, corner_options);
+            best.alignment = splice_start(best.alignment, p, *start, splice_length_m, corner_options, limit);
             ++best.spliced_ends;
         }
         if (end && misses(end_miss(best.alignment, *end))) {
-            best.alignment = splice_end(best.alignment, p, *end, splice_length_m, corner_options);
+            best.alignment = splice_end(best.alignment, p, *end, splice_length_m, corner_options, limit);
             ++best.spliced_ends;
         }
         if (best.method == ChainMethod::railway && best.spliced_ends > 0) {

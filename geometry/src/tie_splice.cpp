@@ -2,6 +2,7 @@
 // tie_splice.hpp.
 #include "tie_splice.hpp"
 
+#include "design_splice.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 
 #include <cmath>
@@ -34,10 +35,20 @@ EndMiss miss(const Pose& got, const Pose& want) {
             std::abs(got.curvature - want.curvature)};
 }
 
+// The stretch from `from` to `to` through its nodes: a few curves of
+// railway design where they follow the nodes, else corners.
+Alignment stretch(const std::vector<Point>& p, const Pose& from, const Pose& to, const CornerFitOptions& o,
+                  double tolerance) {
+    if (std::optional<Alignment> a = design_splice(p, from, to, tolerance)) {
+        return *a;
+    }
+    return corner_polyline(p, from, to, o);
+}
+
 } // namespace
 
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Pose& end, double tail_m,
-                     const CornerFitOptions& o) {
+                     const CornerFitOptions& o, double tolerance) {
     const std::vector<double> t = polyline_chainage(p);
     std::size_t k = p.size() - 1;
     while (k > 0 && (k + 1 == p.size() || t.back() - t[k] < tail_m)) {
@@ -45,32 +56,32 @@ Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Po
     }
     if (k == 0) {
         // The whole chain is the stretch: keep only the fit's start pose.
-        return corner_polyline(p, evaluate(fit, 0.0), end, o);
+        return stretch(p, evaluate(fit, 0.0), end, o, tolerance);
     }
     const double s = node_s(fit, p, t, k);
     const std::vector<Alignment> parts = split_alignment(fit, {s});
     Alignment out = parts.front();
     const Pose cut = evaluate(fit, s);
     const std::vector<Point> tail(p.begin() + static_cast<long>(k), p.end());
-    const Alignment a = corner_polyline(tail, cut, end, o);
+    const Alignment a = stretch(tail, cut, end, o, tolerance);
     out.primitives.insert(out.primitives.end(), a.primitives.begin(), a.primitives.end());
     return out;
 }
 
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& p, const Pose& start, double tail_m,
-                       const CornerFitOptions& o) {
+                       const CornerFitOptions& o, double tolerance) {
     const std::vector<double> t = polyline_chainage(p);
     std::size_t k = 0;
     while (k + 1 < p.size() && (k == 0 || t[k] < tail_m)) {
         ++k;
     }
     if (k + 1 == p.size()) {
-        return corner_polyline(p, start, evaluate(fit, length(fit)), o);
+        return stretch(p, start, evaluate(fit, length(fit)), o, tolerance);
     }
     const double s = node_s(fit, p, t, k);
     const std::vector<Alignment> parts = split_alignment(fit, {s});
     const std::vector<Point> head(p.begin(), p.begin() + static_cast<long>(k) + 1);
-    Alignment out = corner_polyline(head, start, evaluate(fit, s), o);
+    Alignment out = stretch(head, start, evaluate(fit, s), o, tolerance);
     const auto& rest = parts.back().primitives;
     out.primitives.insert(out.primitives.end(), rest.begin(), rest.end());
     return out;

@@ -20,11 +20,13 @@ Projection node_on(const IndexedAlignment& fit, const std::vector<Point>& points
                    std::size_t k);
 
 // points: the chain's mapped nodes in order. The spliced stretch covers the
-// nodes within tail_m of the end (at least the last segment).
+// nodes within tail_m of the end (at least the last segment). It is a few
+// curves of railway design (design_splice.hpp) where one passes its nodes
+// within design_tolerance_m, else corners within the options' deviation.
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& points, const Pose& start, double tail_m,
-                       const CornerFitOptions& options);
+                       const CornerFitOptions& options, double design_tolerance_m);
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& points, const Pose& end, double tail_m,
-                     const CornerFitOptions& options);
+                     const CornerFitOptions& options, double design_tolerance_m);
 
 // How far the alignment's end misses a pose: position (m), heading (rad,
 // modulo full turns) and curvature (1/m).

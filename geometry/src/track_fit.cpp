@@ -358,8 +358,9 @@ private:
             const Pose p = branch_pose(ce.chain, ce.vertex, ce.at_start, t);
             const std::vector<Point>& pts = geometry_[ce.chain].points;
             const CornerFitOptions corners{1000.0, 0.25};
-            Alignment a = ce.at_start ? splice_start(f.alignment, pts, p, tail_m, corners)
-                                      : splice_end(f.alignment, pts, p, tail_m, corners);
+            constexpr double design_m = 2.0; // as a chain's fit must follow its nodes (chain_fit.cpp)
+            Alignment a = ce.at_start ? splice_start(f.alignment, pts, p, tail_m, corners, design_m)
+                                      : splice_end(f.alignment, pts, p, tail_m, corners, design_m);
             if (ce.at_start) {
                 // Only the head changed: everything after it moved by the length difference.
                 const double delta = length(a) - len;

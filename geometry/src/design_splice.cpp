@@ -1,0 +1,102 @@
+// Rebuilding a tied stretch as a few curves; see design_splice.hpp.
+#include "design_splice.hpp"
+
+#include "fit/curvature_model.hpp"
+#include "fit/least_squares.hpp"
+#include "tie_splice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace railodd::geometry {
+
+namespace {
+
+constexpr int max_curves = 4;
+// No element of the splice is shorter: issue 37 wants none under a metre.
+constexpr double min_element_m = 1.0;
+
+double heading_between(const Point& a, const Point& b) { return std::atan2(b.y - a.y, b.x - a.x); }
+
+// The mapped polyline's heading at chainage s (of the segment holding it),
+// unwrapped to lie within half a turn of `near`.
+double polyline_heading(const std::vector<Point>& p, const std::vector<double>& t, double s, double near) {
+    std::size_t i = 1;
+    while (i + 1 < p.size() && t[i] < s) {
+        ++i;
+    }
+    const double h = heading_between(p[i - 1], p[i]);
+    return near + std::remainder(h - near, 2 * std::numbers::pi);
+}
+
+// n curves over the stretch, each a transition in, an arc and (the last)
+// a transition out to the tie's curvature; lengths in equal shares, each
+// arc's curvature the polyline's turn over its share.
+fit::CurvatureModel first_guess(const std::vector<Point>& p, const Pose& from, const Pose& to, int n) {
+    const std::vector<double> t = polyline_chainage(p);
+    const double share = t.back() / static_cast<double>(3 * n + 1);
+    fit::CurvatureModel m;
+    m.start = from;
+    m.start_free = false;
+    m.knot_var.push_back(-1);
+    m.knot_fixed.push_back(from.curvature);
+    double at = from.hdg;
+    for (int i = 0; i < n; ++i) {
+        const double s = t.back() * static_cast<double>(i + 1) / static_cast<double>(n);
+        const double next = i + 1 == n ? at + std::remainder(to.hdg - at, 2 * std::numbers::pi)
+                                       : polyline_heading(p, t, s, at);
+        m.curv.push_back(std::clamp((next - at) / (3.0 * share), -0.1, 0.1));
+        at = next;
+        const int v = static_cast<int>(m.curv.size()) - 1;
+        m.push_segment(share, true, v);
+        m.push_segment(2.0 * share, true, v);
+    }
+    m.push_segment(share, true, -1, to.curvature);
+    return m;
+}
+
+std::vector<fit::Point2> as_points(const std::vector<Point>& p) {
+    std::vector<fit::Point2> out;
+    out.reserve(p.size());
+    for (const Point& q : p) {
+        out.push_back({q.x, q.y});
+    }
+    return out;
+}
+
+} // namespace
+
+std::optional<Alignment> design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
+                                       double tolerance_m) {
+    if (points.size() < 2 || !(tolerance_m > 0.0)) {
+        return std::nullopt;
+    }
+    const double stretch = polyline_chainage(points).back();
+    const std::vector<fit::Point2> p2 = as_points(points);
+    fit::SolveOptions so;
+    so.sigma_m = 0.3;
+    so.pin_first = false;
+    so.pin_last = true;
+    so.end = to;
+    // Tiny problems (a few curves, a few dozen nodes): iterations are cheap,
+    // and a stretch whose tie meets its nodes at an angle converges slowly.
+    so.max_iterations = 100;
+    so.geodesic_acceleration = true;
+    so.abandon_loops = true;
+    so.min_length_m = min_element_m;
+    for (int n = 1; n <= max_curves && stretch >= min_element_m * static_cast<double>(3 * n + 1); ++n) {
+        fit::CurvatureModel m = first_guess(points, from, to, n);
+        const fit::SolveReport r = fit::solve(m, p2, so);
+        if (!r.end_met || r.gave_up || r.max_m > tolerance_m) {
+            continue;
+        }
+        Alignment a = m.to_alignment();
+        if (!loops_back(a, points)) {
+            return a;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace railodd::geometry
