@@ -71,8 +71,23 @@ ChainFit spliced(const Alignment& free_fit, const std::vector<Point>& p, const s
     return f;
 }
 
-double worst_distance(const Alignment& a, const std::vector<Point>& p) {
-    return loops_back(a, p) ? std::numeric_limits<double>::infinity() : measure_fit(a, p).max_m;
+// The furthest node the alignment follows: the strays its fit left out do
+// not count, as in the tied fit's followed_max_m. Counted, a chain whose
+// free fit left a stray out was judged by it, found no stretch to patch
+// round (the patch skips strays) and was built by corners throughout
+// (Cologne: five chains of 1.8-14 km).
+double worst_distance(const Alignment& a, const std::vector<Point>& p, const std::vector<std::size_t>& strays) {
+    if (loops_back(a, p)) {
+        return std::numeric_limits<double>::infinity();
+    }
+    const std::vector<double> d = distances(a, p);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        if (!std::binary_search(strays.begin(), strays.end(), i)) {
+            worst = std::max(worst, d[i]);
+        }
+    }
+    return worst;
 }
 
 // The fit with free ends, its tied stretches spliced on; its strays in
@@ -86,10 +101,10 @@ ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& sta
     FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
     *strays = std::move(r.quality.strays);
     ChainFit f = spliced(r.alignment, p, start, end, limit);
-    *worst = worst_distance(f.alignment, p);
+    *worst = worst_distance(f.alignment, p, *strays);
     if (*worst >= tied_worst) {
         f = spliced(r.alignment, p, start, end, 0.0);
-        *worst = worst_distance(f.alignment, p);
+        *worst = worst_distance(f.alignment, p, *strays);
     }
     return f;
 }

@@ -11,28 +11,6 @@ namespace railodd::geometry {
 
 namespace {
 
-// The furthest the piece passes from the polyline through `nodes` (its
-// first and last point where the piece starts and ends), every 2 m.
-double off_polyline(const Alignment& piece, std::vector<Point> nodes) {
-    const Pose a = evaluate(piece, 0.0), b = evaluate(piece, length(piece));
-    nodes.front() = {a.x, a.y};
-    nodes.back() = {b.x, b.y};
-    double worst = 0.0;
-    const double len = length(piece);
-    for (double s = 0.0; s <= len + 1.0; s += 2.0) {
-        const Pose q = evaluate(piece, std::min(s, len));
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
-            const double dx = nodes[i + 1].x - nodes[i].x, dy = nodes[i + 1].y - nodes[i].y;
-            const double l2 = dx * dx + dy * dy;
-            const double u = l2 > 0.0 ? std::clamp(((q.x - nodes[i].x) * dx + (q.y - nodes[i].y) * dy) / l2, 0.0, 1.0) : 0.0;
-            best = std::min(best, std::hypot(q.x - nodes[i].x - u * dx, q.y - nodes[i].y - u * dy));
-        }
-        worst = std::max(worst, best);
-    }
-    return worst;
-}
-
 void append(Alignment& out, const Alignment& a) {
     if (out.primitives.empty()) {
         out.start = a.start;

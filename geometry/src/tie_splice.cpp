@@ -5,7 +5,9 @@
 #include "design_splice.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace railodd::geometry {
@@ -21,6 +23,26 @@ std::vector<double> polyline_chainage(const std::vector<Point>& p) {
 Projection node_on(const IndexedAlignment& fit, const std::vector<Point>& p, const std::vector<double>& t, std::size_t k) {
     const double expected = t.back() > 0.0 ? t[k] * fit.length() / t.back() : 0.0;
     return fit.project_within(p[k].x, p[k].y, expected - 100.0, expected + 100.0);
+}
+
+double off_polyline(const Alignment& piece, std::vector<Point> nodes) {
+    const Pose a = evaluate(piece, 0.0), b = evaluate(piece, length(piece));
+    nodes.front() = {a.x, a.y};
+    nodes.back() = {b.x, b.y};
+    double worst = 0.0;
+    const double len = length(piece);
+    for (double s = 0.0; s <= len + 1.0; s += 2.0) {
+        const Pose q = evaluate(piece, std::min(s, len));
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+            const double dx = nodes[i + 1].x - nodes[i].x, dy = nodes[i + 1].y - nodes[i].y;
+            const double l2 = dx * dx + dy * dy;
+            const double u = l2 > 0.0 ? std::clamp(((q.x - nodes[i].x) * dx + (q.y - nodes[i].y) * dy) / l2, 0.0, 1.0) : 0.0;
+            best = std::min(best, std::hypot(q.x - nodes[i].x - u * dx, q.y - nodes[i].y - u * dy));
+        }
+        worst = std::max(worst, best);
+    }
+    return worst;
 }
 
 namespace {

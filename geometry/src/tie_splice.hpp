@@ -19,6 +19,10 @@ std::vector<double> polyline_chainage(const std::vector<Point>& points);
 Projection node_on(const IndexedAlignment& fit, const std::vector<Point>& points, const std::vector<double>& t,
                    std::size_t k);
 
+// The furthest the piece passes from the polyline through `nodes` (its
+// first and last point where the piece starts and ends), every 2 m.
+double off_polyline(const Alignment& piece, std::vector<Point> nodes);
+
 // points: the chain's mapped nodes in order. The spliced stretch covers the
 // nodes within tail_m of the end (at least the last segment). It is a few
 // curves of railway design (design_splice.hpp) where one passes its nodes
