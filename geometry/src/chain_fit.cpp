@@ -71,42 +71,49 @@ ChainFit spliced(const Alignment& free_fit, const std::vector<Point>& p, const s
     return f;
 }
 
-// The furthest node the alignment follows: the strays its fit left out do
-// not count, as in the tied fit's followed_max_m. Counted, a chain whose
-// free fit left a stray out was judged by it, found no stretch to patch
-// round (the patch skips strays) and was built by corners throughout
-// (Cologne: five chains of 1.8-14 km).
-double worst_distance(const Alignment& a, const std::vector<Point>& p, const std::vector<std::size_t>& strays) {
-    if (loops_back(a, p)) {
-        return std::numeric_limits<double>::infinity();
+// How far a spliced fit lies from the chain's nodes: all of them (what it
+// is chosen by, against the tied fit's) and those it follows, its free
+// fit's strays left out (what the chain's limit is read against, as the
+// tied fit's followed_max_m is). Judged by all, a chain whose free fit left
+// a stray out was sent to corners throughout: the patch, which skips
+// strays, found no stretch to cut (Cologne: five chains of 1.8-14 km).
+struct SplicedFit {
+    ChainFit fit;
+    std::vector<std::size_t> strays;
+    double worst_all = 0.0;
+    double worst_followed = 0.0;
+};
+
+void measure(SplicedFit& s, const std::vector<Point>& p) {
+    if (loops_back(s.fit.alignment, p)) {
+        s.worst_all = s.worst_followed = std::numeric_limits<double>::infinity();
+        return;
     }
-    const std::vector<double> d = distances(a, p);
-    double worst = 0.0;
+    const std::vector<double> d = distances(s.fit.alignment, p);
+    s.worst_all = s.worst_followed = 0.0;
     for (std::size_t i = 0; i < d.size(); ++i) {
-        if (!std::binary_search(strays.begin(), strays.end(), i)) {
-            worst = std::max(worst, d[i]);
+        s.worst_all = std::max(s.worst_all, d[i]);
+        if (!std::binary_search(s.strays.begin(), s.strays.end(), i)) {
+            s.worst_followed = std::max(s.worst_followed, d[i]);
         }
     }
-    return worst;
 }
 
-// The fit with free ends, its tied stretches spliced on; its strays in
-// *strays and its largest node distance in *worst. Splices of design are
-// tried first (within the chain's limit); where the chain then strays
+// The fit with free ends, its tied stretches spliced on. Splices of design
+// are tried first (within the chain's limit); where the chain then strays
 // further than the tied fit did (`tied_worst`), corners, which follow
 // every node within 0.25 m.
-ChainFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& o, const std::vector<IndexedAlignment>& guides, double limit,
-                     double tied_worst, std::vector<std::size_t>* strays, double* worst) {
+SplicedFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
+                       const FitOptions& o, const std::vector<IndexedAlignment>& guides, double limit,
+                       double tied_worst) {
     FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
-    *strays = std::move(r.quality.strays);
-    ChainFit f = spliced(r.alignment, p, start, end, limit);
-    *worst = worst_distance(f.alignment, p, *strays);
-    if (*worst >= tied_worst) {
-        f = spliced(r.alignment, p, start, end, 0.0);
-        *worst = worst_distance(f.alignment, p, *strays);
+    SplicedFit s{spliced(r.alignment, p, start, end, limit), std::move(r.quality.strays)};
+    measure(s, p);
+    if (s.worst_all >= tied_worst) {
+        s.fit = spliced(r.alignment, p, start, end, 0.0);
+        measure(s, p);
     }
-    return f;
+    return s;
 }
 
 // A run fitted again on its own, with the chain's tie where it reaches a
@@ -174,15 +181,13 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     const double reach = noise_reach(p.size(), r.quality);
     const double limit = fallback_deviation_m + reach;
     if ((start || end) && worst > retry_deviation_m + reach) {
-        std::vector<std::size_t> free_strays;
-        double m = 0.0;
-        ChainFit s = spliced_fit(p, start, end, o, guides, limit, worst, &free_strays, &m);
-        s.noise_sigma_m = best.noise_sigma_m;
-        s.outliers = best.outliers;
-        if (m < worst) {
-            best = std::move(s);
-            worst = m;
-            strays = std::move(free_strays);
+        SplicedFit s = spliced_fit(p, start, end, o, guides, limit, worst);
+        s.fit.noise_sigma_m = best.noise_sigma_m;
+        s.fit.outliers = best.outliers;
+        if (s.worst_all < worst) {
+            best = std::move(s.fit);
+            worst = s.worst_followed;
+            strays = std::move(s.strays);
         }
     }
     if (worst > limit && std::isfinite(worst) && patch(best, p, strays, limit, start, end, o, guides)) {
