@@ -57,6 +57,21 @@ const std::vector<WayRange>& TagContext::ways(std::size_t edge) {
     }
     const auto& e = geo().geometry.tracks.edges[edge];
     const auto& ia = alignment(edge);
+    // Each node's share of the way along the mapped polyline, in the
+    // alignment's direction: where a short way's two ends project onto one
+    // point (a way of 0.7 m at a spliced end whose curve passes its nodes
+    // a metre off: Cologne way 33510672), its range is read from it instead
+    // of being dropped.
+    std::vector<double> t(e.nodes.size(), 0.0);
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        t[i] = t[i - 1] + std::hypot(e.nodes[i].xy.x - e.nodes[i - 1].xy.x, e.nodes[i].xy.y - e.nodes[i - 1].xy.y);
+    }
+    const bool against = ia.project(e.nodes.front().xy.x, e.nodes.front().xy.y).s >
+                         ia.project(e.nodes.back().xy.x, e.nodes.back().xy.y).s;
+    const auto share = [&](std::size_t i) {
+        const double u = t.back() > 0.0 ? t[i] / t.back() : 0.0;
+        return (against ? 1.0 - u : u) * ia.length();
+    };
     std::vector<WayRange> out;
     for (const auto& span : e.ways) {
         const auto w = way_by_id_.find(span.way_id);
@@ -65,7 +80,11 @@ const std::vector<WayRange>& TagContext::ways(std::size_t edge) {
         }
         const auto& a = e.nodes[span.first].xy;
         const auto& b = e.nodes[span.last].xy;
-        const double sa = ia.project(a.x, a.y).s, sb = ia.project(b.x, b.y).s;
+        double sa = ia.project(a.x, a.y).s, sb = ia.project(b.x, b.y).s;
+        if (std::abs(sb - sa) <= 1e-6 && t[span.last] > t[span.first]) {
+            sa = share(span.first);
+            sb = share(span.last);
+        }
         out.push_back({std::min(sa, sb), std::max(sa, sb), w->second});
     }
     std::sort(out.begin(), out.end(), [](const WayRange& x, const WayRange& y) { return x.s0 < y.s0; });
