@@ -76,7 +76,7 @@ ChainFit spliced(const Alignment& free_fit, const std::vector<Point>& p, const s
 // fit's strays left out (what the chain's limit is read against, as the
 // tied fit's followed_max_m is). Judged by all, a chain whose free fit left
 // a stray out was sent to corners throughout: the patch, which skips
-// strays, found no stretch to cut (Cologne: five chains of 1.8-14 km).
+// strays, found no stretch to cut (Cologne: chains of up to 14 km).
 struct SplicedFit {
     ChainFit fit;
     std::vector<std::size_t> strays;

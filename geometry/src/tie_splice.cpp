@@ -1,4 +1,4 @@
-// Splicing the corner construction onto the end of a fitted chain; see
+// Splicing a rebuilt stretch onto the end of a fitted chain; see
 // tie_splice.hpp.
 #include "tie_splice.hpp"
 

@@ -1,6 +1,7 @@
 #pragma once
 // Making a fitted chain meet a tied end pose exactly: the stretch of the fit
-// next to that end is replaced by the corner construction (corner_fit.hpp)
+// next to that end is replaced by a few curves of design (design_splice.hpp)
+// or, where none follows its nodes, the corner construction (corner_fit.hpp),
 // from the fit's own pose where the stretch begins to the tied pose. The rest
 // of the fit is kept as it is, and the joint is G2 because the construction
 // starts (or ends) with the fit's pose and curvature there.
