@@ -33,8 +33,8 @@ double polyline_heading(const std::vector<Point>& p, const std::vector<double>& 
 // n curves over the stretch, each a transition in, an arc and (the last)
 // a transition out to the tie's curvature; lengths in equal shares, each
 // arc's curvature the polyline's turn over its share.
-fit::CurvatureModel first_guess(const std::vector<Point>& p, const Pose& from, const Pose& to, int n) {
-    const std::vector<double> t = polyline_chainage(p);
+fit::CurvatureModel first_guess(const std::vector<Point>& p, const std::vector<double>& t, const Pose& from,
+                                const Pose& to, int n) {
     const double share = t.back() / static_cast<double>(3 * n + 1);
     fit::CurvatureModel m;
     m.start = from;
@@ -72,7 +72,8 @@ std::optional<Alignment> design_splice(const std::vector<Point>& points, const P
     if (points.size() < 2 || !(tolerance_m > 0.0)) {
         return std::nullopt;
     }
-    const double stretch = polyline_chainage(points).back();
+    const std::vector<double> t = polyline_chainage(points);
+    const double stretch = t.back();
     const std::vector<fit::Point2> p2 = as_points(points);
     fit::SolveOptions so;
     so.sigma_m = 0.3;
@@ -86,7 +87,7 @@ std::optional<Alignment> design_splice(const std::vector<Point>& points, const P
     so.abandon_loops = true;
     so.min_length_m = min_element_m;
     for (int n = 1; n <= max_curves && stretch >= min_element_m * static_cast<double>(3 * n + 1); ++n) {
-        fit::CurvatureModel m = first_guess(points, from, to, n);
+        fit::CurvatureModel m = first_guess(points, t, from, to, n);
         const fit::SolveReport r = fit::solve(m, p2, so);
         if (!r.end_met || r.gave_up || r.max_m > tolerance_m) {
             continue;

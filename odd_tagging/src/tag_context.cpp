@@ -57,20 +57,24 @@ const std::vector<WayRange>& TagContext::ways(std::size_t edge) {
     }
     const auto& e = geo().geometry.tracks.edges[edge];
     const auto& ia = alignment(edge);
-    // Each node's share of the way along the mapped polyline, in the
+    // A node's share of the way along the mapped polyline, in the
     // alignment's direction: where a short way's two ends project onto one
     // point (a way of 0.7 m at a spliced end whose curve passes its nodes
     // a metre off: Cologne way 33510672), its range is read from it instead
     // of being dropped.
-    std::vector<double> t(e.nodes.size(), 0.0);
-    for (std::size_t i = 1; i < t.size(); ++i) {
-        t[i] = t[i - 1] + std::hypot(e.nodes[i].xy.x - e.nodes[i - 1].xy.x, e.nodes[i].xy.y - e.nodes[i - 1].xy.y);
-    }
-    const bool against = ia.project(e.nodes.front().xy.x, e.nodes.front().xy.y).s >
-                         ia.project(e.nodes.back().xy.x, e.nodes.back().xy.y).s;
+    std::vector<double> t;
+    const auto chainage = [&](std::size_t i) {
+        if (t.empty()) {
+            t.assign(e.nodes.size(), 0.0);
+            for (std::size_t j = 1; j < t.size(); ++j) {
+                t[j] = t[j - 1] + std::hypot(e.nodes[j].xy.x - e.nodes[j - 1].xy.x, e.nodes[j].xy.y - e.nodes[j - 1].xy.y);
+            }
+        }
+        return t[i];
+    };
     const auto share = [&](std::size_t i) {
-        const double u = t.back() > 0.0 ? t[i] / t.back() : 0.0;
-        return (against ? 1.0 - u : u) * ia.length();
+        const double u = chainage(e.nodes.size() - 1) > 0.0 ? chainage(i) / chainage(e.nodes.size() - 1) : 0.0;
+        return (geo().geometry.fitted_tracks.edges[edge].reversed ? 1.0 - u : u) * ia.length();
     };
     std::vector<WayRange> out;
     for (const auto& span : e.ways) {
@@ -81,7 +85,7 @@ const std::vector<WayRange>& TagContext::ways(std::size_t edge) {
         const auto& a = e.nodes[span.first].xy;
         const auto& b = e.nodes[span.last].xy;
         double sa = ia.project(a.x, a.y).s, sb = ia.project(b.x, b.y).s;
-        if (std::abs(sb - sa) <= 1e-6 && t[span.last] > t[span.first]) {
+        if (std::abs(sb - sa) <= 1e-6 && chainage(span.last) > chainage(span.first)) {
             sa = share(span.first);
             sb = share(span.last);
         }
