@@ -191,7 +191,7 @@ TEST(ScenarioPlaySharedExtract, ARandomSampleOfLiechtensteinPlays) {
     RAILODD_REQUIRE_SHARED_DATA();
     REQUIRE_PLAYER();
     const fs::path dir = scratch_dir();
-    play_sample("valhalla_liechtenstein-latest.osm.pbf", "--count 5 --seed 11", dir);
+    play_sample("valhalla_liechtenstein-latest.osm.pbf", "--count 2 --seed 11", dir);
     // Lines run on across every track end: no switch is left without track
     // before or after it (the track ends follow the alignment's direction).
     const json coverage = read_json(dir / "set" / "coverage.json");
