@@ -192,6 +192,7 @@ TEST(CliConvert, SampleRouteGeometrySections) {
     const auto report = nlohmann::json::parse(read_file(dir / "out" / "report.json"));
     EXPECT_EQ(report["geometry"]["summary"]["switch_vertices"], 3);
     EXPECT_EQ(report["geometry"]["summary"]["links"]["corner_chains"], 0);
+    EXPECT_EQ(report["geometry"]["summary"]["links"]["beyond_limit_chains"], 0);
     EXPECT_EQ(report["vertical"]["sources"]["dem"], report["geometry"]["summary"]["edges"]);
     EXPECT_EQ(report["cant"]["curves_with_tagged_cant"], 1);
     EXPECT_EQ(report["cant"]["max_cant_mm"], 100.0);

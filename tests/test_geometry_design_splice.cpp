@@ -3,6 +3,7 @@
 #include "chain_fit.hpp"
 #include "design_fit_support.hpp"
 #include "design_splice.hpp"
+#include "railodd/geometry/corner_fit.hpp"
 
 #include <gtest/gtest.h>
 
@@ -91,6 +92,30 @@ TEST(DesignSplice, NoDesignWhereTheTieDisagreesWithTheNodes) {
     const std::vector<geometry::Point> p = nodes_along(d, 2.0);
     const geometry::Pose from{0.0, 0.0, 0.6, 0.0};
     EXPECT_FALSE(geometry::design_splice(p, from, geometry::evaluate(d, 20.0), 0.25).has_value());
+}
+
+// The same tie, 0.6 rad off two metres from it, within 40 m of straight
+// nodes: corners through them turn at R 2-3 m, which no vehicle runs. The
+// closest design turns no tighter than R 10 m, meets both poses and comes
+// back onto the nodes' line a few metres off at most.
+TEST(DesignSplice, ATieAtAnAngleGetsTheClosestDesignATrackCanTurn) {
+    geometry::Alignment d;
+    d.start = {0.0, 0.0, 0.0, 0.0};
+    d.primitives = {geometry::make_line(40.0)};
+    const std::vector<geometry::Point> p = nodes_along(d, 2.0);
+    const geometry::Pose from{0.0, 0.0, 0.6, 0.0}, to = geometry::evaluate(d, 40.0);
+    const geometry::CornerFitOptions corners{1000.0, 0.25};
+    EXPECT_FALSE(geometry::drivable(geometry::corner_polyline(p, from, to, corners)));
+    const std::optional<geometry::Alignment> a = geometry::closest_design_splice(p, from, to, 10.0);
+    ASSERT_TRUE(a.has_value());
+    EXPECT_TRUE(geometry::drivable(*a));
+    expect_meets(*a, from, to);
+    for (const geometry::Primitive& q : a->primitives) {
+        EXPECT_GE(q.length, 1.0) << geometry::to_string(q.kind);
+    }
+    const double off = geometry::measure_fit(*a, p).max_m;
+    EXPECT_GT(off, 0.25);
+    EXPECT_LT(off, 4.0);
 }
 
 // A tram's junction curve of Munich (valhalla_munchen, 35 m, 17 nodes 2-3 m

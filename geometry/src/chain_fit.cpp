@@ -1,6 +1,7 @@
 // Choosing how one chain is built; see chain_fit.hpp.
 #include "chain_fit.hpp"
 
+#include "design_splice.hpp"
 #include "stretch_patch.hpp"
 #include "tie_splice.hpp"
 
@@ -26,6 +27,10 @@ constexpr double max_heading_rad = 1e-6;
 constexpr double max_curvature = 1e-9;
 // Length of a spliced stretch: room for a turnout's worth of heading change.
 constexpr double splice_length_m = 40.0;
+// Length of the stretch that brings a fit missing its tied pose onto it:
+// the miss is the polish's (millimetres, mostly), which a few metres
+// mend; the rest of the tied fit, chosen over the splices, stays as it is.
+constexpr double miss_splice_length_m = 10.0;
 constexpr CornerFitOptions corner_options{1000.0, 0.25};
 
 // The furthest a node's noise alone takes it from the true track among n
@@ -49,6 +54,16 @@ double noise_reach(std::size_t n, const FitQuality& q) {
         (std::erfc(z / std::sqrt(2.0)) > tail ? lo : hi) = z;
     }
     return lo * sigma;
+}
+
+// Whether `candidate` may replace `kept`: no tighter than a track turns
+// (design_splice.hpp) where `kept` is not. The corners follow their nodes
+// whatever it takes: where the nodes leave a tie at an angle within a few
+// metres (a branch drawn onto its through track across the switch), with
+// corners of R 0.5-5 m, which no vehicle could run (Munich's sub-metre
+// elements were mostly such corners).
+bool may_replace(const Alignment& kept, const Alignment& candidate) {
+    return drivable(candidate) || !drivable(kept);
 }
 
 bool misses(const EndMiss& m) {
@@ -184,7 +199,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
         SplicedFit s = spliced_fit(p, start, end, o, guides, limit, worst);
         s.fit.noise_sigma_m = best.noise_sigma_m;
         s.fit.outliers = best.outliers;
-        if (s.worst_all < worst) {
+        if (s.worst_all < worst && may_replace(best.alignment, s.fit.alignment)) {
             best = std::move(s.fit);
             worst = s.worst_followed;
             strays = std::move(s.strays);
@@ -196,8 +211,12 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     if (worst > limit) {
         // No railway-grade sequence came within reach of every mapped node
         // (tram corners, kinks): lines with clothoid corners keep every node
-        // close and the ties exact.
-        return {corner_polyline(p, start, end, corner_options), ChainMethod::corners, 0, 0, best.noise_sigma_m, 0};
+        // close and the ties exact, where they turn as a track can.
+        Alignment corners = corner_polyline(p, start, end, corner_options);
+        if (!std::isfinite(worst) || may_replace(best.alignment, corners)) {
+            return {std::move(corners), ChainMethod::corners, 0, 0, best.noise_sigma_m, 0};
+        }
+        best.beyond_limit = true;
     }
     // The fit holds its end pose as a constraint, but a window whose every
     // model failed to meet it (least-squares fallback) may still miss, and
@@ -207,11 +226,11 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     // stretch is rebuilt from the fit's pose there to the tied pose.
     if (best.method == ChainMethod::railway || best.method == ChainMethod::patched) {
         if (start && misses(start_miss(best.alignment, *start))) {
-            best.alignment = splice_start(best.alignment, p, *start, splice_length_m, corner_options, limit);
+            best.alignment = splice_start(best.alignment, p, *start, miss_splice_length_m, corner_options, limit);
             ++best.spliced_ends;
         }
         if (end && misses(end_miss(best.alignment, *end))) {
-            best.alignment = splice_end(best.alignment, p, *end, splice_length_m, corner_options, limit);
+            best.alignment = splice_end(best.alignment, p, *end, miss_splice_length_m, corner_options, limit);
             ++best.spliced_ends;
         }
         if (best.method == ChainMethod::railway && best.spliced_ends > 0) {

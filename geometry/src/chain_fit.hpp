@@ -26,6 +26,9 @@ struct ChainFit {
     std::size_t patched_stretches = 0;
     double noise_sigma_m = 0.0; // node scatter the railway fit assumed (FitQuality)
     std::size_t outliers = 0;   // nodes it left out as outliers
+    // Nodes lie beyond the chain's limit, and the corners that would follow
+    // them turn tighter than any track: the railway fit is kept.
+    bool beyond_limit = false;
 };
 
 // guides: parallel tracks' fitted alignments (fit_alignment.hpp).

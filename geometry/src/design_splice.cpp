@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace railodd::geometry {
@@ -46,7 +47,7 @@ fit::CurvatureModel first_guess(const std::vector<Point>& p, const std::vector<d
         const double s = t.back() * static_cast<double>(i + 1) / static_cast<double>(n);
         const double next = i + 1 == n ? at + std::remainder(to.hdg - at, 2 * std::numbers::pi)
                                        : polyline_heading(p, t, s, at);
-        m.curv.push_back(std::clamp((next - at) / (3.0 * share), -0.1, 0.1));
+        m.curv.push_back(std::clamp((next - at) / (3.0 * share), -max_track_curvature, max_track_curvature));
         at = next;
         const int v = static_cast<int>(m.curv.size()) - 1;
         m.push_segment(share, true, v);
@@ -65,16 +66,16 @@ std::vector<fit::Point2> as_points(const std::vector<Point>& p) {
     return out;
 }
 
-} // namespace
-
-std::optional<Alignment> design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
-                                       double tolerance_m) {
-    if (points.size() < 2 || !(tolerance_m > 0.0)) {
-        return std::nullopt;
-    }
-    const std::vector<double> t = polyline_chainage(points);
-    const double stretch = t.back();
-    const std::vector<fit::Point2> p2 = as_points(points);
+// The design of n curves over the stretch, where the solve converges,
+// meets the tied pose, turns as a track can and loops nowhere; with how
+// far it passes from the nodes and their polyline (left unmeasured past
+// `tolerance_m`: the polyline's test is the dearer).
+struct Design {
+    Alignment alignment;
+    double off_m = 0.0;
+};
+std::optional<Design> design_of(int n, const std::vector<Point>& points, const std::vector<double>& t,
+                                const Pose& from, const Pose& to, double tolerance_m) {
     fit::SolveOptions so;
     so.sigma_m = 0.3;
     so.pin_first = false;
@@ -86,21 +87,87 @@ std::optional<Alignment> design_splice(const std::vector<Point>& points, const P
     so.geodesic_acceleration = true;
     so.abandon_loops = true;
     so.min_length_m = min_element_m;
-    for (int n = 1; n <= max_curves && stretch >= min_element_m * static_cast<double>(3 * n + 1); ++n) {
-        fit::CurvatureModel m = first_guess(points, t, from, to, n);
-        const fit::SolveReport r = fit::solve(m, p2, so);
-        if (!r.end_met || r.gave_up || r.max_m > tolerance_m) {
-            continue;
-        }
-        Alignment a = m.to_alignment();
-        // Between nodes far apart a few curves can swing wide of the chord
-        // and still pass every node (truth seed 1266 at 1 m: 13 m off
-        // between nodes 60 m apart, at R 24 m).
-        if (!loops_back(a, points) && off_polyline(a, points) <= tolerance_m) {
-            return a;
+    fit::CurvatureModel m = first_guess(points, t, from, to, n);
+    const fit::SolveReport r = fit::solve(m, as_points(points), so);
+    if (!r.end_met || r.gave_up || r.max_m > tolerance_m) {
+        return std::nullopt;
+    }
+    Design d{m.to_alignment(), r.max_m};
+    if (!drivable(d.alignment) || loops_back(d.alignment, points)) {
+        return std::nullopt;
+    }
+    // Between nodes far apart a few curves can swing wide of the chord
+    // and still pass every node (truth seed 1266 at 1 m: 13 m off
+    // between nodes 60 m apart, at R 24 m).
+    d.off_m = std::max(d.off_m, off_polyline(d.alignment, points));
+    return d;
+}
+
+bool room_for(int curves, double stretch) { return stretch >= min_element_m * static_cast<double>(3 * curves + 1); }
+
+} // namespace
+
+bool drivable(const Alignment& a) {
+    return std::all_of(a.primitives.begin(), a.primitives.end(), [](const Primitive& e) {
+        return std::max(std::abs(e.curv_start), std::abs(e.curv_end)) <= max_track_curvature;
+    });
+}
+
+std::optional<Alignment> design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
+                                       double tolerance_m) {
+    if (points.size() < 2 || !(tolerance_m > 0.0)) {
+        return std::nullopt;
+    }
+    const std::vector<double> t = polyline_chainage(points);
+    for (int n = 1; n <= max_curves && room_for(n, t.back()); ++n) {
+        std::optional<Design> d = design_of(n, points, t, from, to, tolerance_m);
+        if (d && d->off_m <= tolerance_m) {
+            return std::move(d->alignment);
         }
     }
     return std::nullopt;
+}
+
+std::optional<Alignment> closest_design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
+                                               double max_off_m) {
+    if (points.size() < 2) {
+        return std::nullopt;
+    }
+    const std::vector<double> t = polyline_chainage(points);
+    std::optional<Design> best;
+    // The nodes that contradict a pose lie next to it, and pull the solve
+    // into a loop or away from the pose it must meet (a siding drawn onto
+    // its main line at 0.54 rad): the nodes within `clear` of either end
+    // are left out of the solve, not of the measure.
+    std::size_t last_kept = points.size() + 1;
+    for (const double clear : {0.0, 5.0, 10.0, 20.0, std::numeric_limits<double>::infinity()}) {
+        std::vector<Point> kept{points.front()};
+        for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+            if (t[i] > clear && t.back() - t[i] > clear) {
+                kept.push_back(points[i]);
+            }
+        }
+        kept.push_back(points.back());
+        if (kept.size() == last_kept) {
+            continue;
+        }
+        last_kept = kept.size();
+        const std::vector<double> tk = polyline_chainage(kept);
+        for (int n = 1; n <= max_curves && room_for(n, t.back()); ++n) {
+            std::optional<Design> d = design_of(n, kept, tk, from, to, std::numeric_limits<double>::infinity());
+            if (!d || loops_back(d->alignment, points)) {
+                continue;
+            }
+            d->off_m = std::max(measure_fit(d->alignment, points).max_m, off_polyline(d->alignment, points));
+            if (!best || d->off_m < best->off_m) {
+                best = std::move(d);
+            }
+        }
+    }
+    if (!best || best->off_m > max_off_m) {
+        return std::nullopt;
+    }
+    return std::move(best->alignment);
 }
 
 } // namespace railodd::geometry

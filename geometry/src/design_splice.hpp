@@ -12,11 +12,24 @@
 
 namespace railodd::geometry {
 
+// No track turns tighter than this (R 10 m; tram curves are 15-25 m).
+constexpr double max_track_curvature = 0.1;
+
+// Whether every element turns as a track can (max_track_curvature).
+bool drivable(const Alignment& a);
+
 // points: the stretch's nodes from the one `from` stands at to the one
 // `to` ties. The design with the fewest curves (up to four) whose every
-// element is a metre or longer and that passes every node within
-// tolerance_m; none where no such design exists or it loops.
+// element is a metre or longer, that turns as a track can and passes every
+// node within tolerance_m; none where no such design exists or it loops.
 std::optional<Alignment> design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
                                        double tolerance_m);
+
+// The same designs, the one passing closest to the nodes, where that is
+// within max_off_m of them: for nodes leaving a tie at an angle no track
+// can turn. The nodes next to either pose are left out of the solve where
+// they pull it into a loop or off the pose, not out of the measure.
+std::optional<Alignment> closest_design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
+                                               double max_off_m);
 
 } // namespace railodd::geometry

@@ -109,6 +109,7 @@ ordered_json links_entry(const FittedNetwork& net) {
             {"untied_branch_ends", net.untied_branch_ends},
             {"degenerate_chains", net.degenerate_chains},
             {"corner_chains", net.corner_chains.size()},
+            {"beyond_limit_chains", net.beyond_limit_chains.size()},
             {"spliced_ends", net.spliced_ends},
             {"patched_stretches", net.patched_stretches},
             {"reversed_chains", net.reversed_chains},

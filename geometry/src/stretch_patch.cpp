@@ -1,6 +1,7 @@
 // Cutting a chain's fit round the nodes it misses; see stretch_patch.hpp.
 #include "stretch_patch.hpp"
 
+#include "design_splice.hpp"
 #include "tie_splice.hpp"
 
 #include <algorithm>
@@ -76,11 +77,20 @@ std::optional<Alignment> assemble_patched(const std::vector<Point>& p,
         const bool at_end = b + 1 == p.size();
         const std::optional<Pose> to = at_end ? end : std::optional<Pose>(run_fits[next_run].start);
         const std::vector<Point> nodes(p.begin() + static_cast<long>(a), p.begin() + static_cast<long>(b) + 1);
-        const Alignment corners = corner_polyline(nodes, from, to, o);
-        if (off_polyline(corners, nodes) > limit) {
+        Alignment piece = corner_polyline(nodes, from, to, o);
+        if (from && to && !drivable(piece)) {
+            // Corners tighter than a track turns between two poses (a jog
+            // where two ways do not meet, nodes leaving a tie at an angle):
+            // the design closest to the nodes within the limit, or no patch.
+            std::optional<Alignment> design = closest_design_splice(nodes, *from, *to, limit);
+            if (!design) {
+                return std::nullopt;
+            }
+            piece = std::move(*design);
+        } else if (off_polyline(piece, nodes) > limit) {
             return std::nullopt;
         }
-        append(out, corners);
+        append(out, piece);
         if (!at_end) {
             append(out, run_fits[next_run++]);
         }

@@ -58,13 +58,22 @@ EndMiss miss(const Pose& got, const Pose& want) {
 }
 
 // The stretch from `from` to `to` through its nodes: a few curves of
-// railway design where they follow the nodes, else corners.
+// railway design where they follow the nodes, else corners; where those
+// turn tighter than a track can (nodes leaving the tie at an angle), the
+// design closest to the nodes, however far (the chain's fit chooses
+// between it and the tied fit).
 Alignment stretch(const std::vector<Point>& p, const Pose& from, const Pose& to, const CornerFitOptions& o,
                   double tolerance) {
     if (std::optional<Alignment> a = design_splice(p, from, to, tolerance)) {
         return *a;
     }
-    return corner_polyline(p, from, to, o);
+    Alignment corners = corner_polyline(p, from, to, o);
+    if (!drivable(corners)) {
+        if (std::optional<Alignment> a = closest_design_splice(p, from, to, std::numeric_limits<double>::infinity())) {
+            return *a;
+        }
+    }
+    return corners;
 }
 
 } // namespace

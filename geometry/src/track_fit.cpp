@@ -99,6 +99,7 @@ public:
         in_progress_.assign(chains_.size(), 0);
         depends_.resize(chains_.size());
         corner_chain_.assign(chains_.size(), 0);
+        beyond_limit_.assign(chains_.size(), 0);
         chain_degenerate_.assign(chains_.size(), 0);
         chain_spliced_.assign(chains_.size(), 0);
         chain_patched_.assign(chains_.size(), 0);
@@ -137,6 +138,9 @@ public:
         for (std::size_t c : completion_) {
             if (corner_chain_[c]) {
                 fallback_.push_back(c);
+            }
+            if (beyond_limit_[c]) {
+                beyond_.push_back(c);
             }
             spliced_ += chain_spliced_[c];
             patched_ += chain_patched_[c];
@@ -401,6 +405,7 @@ private:
             }
             ChainFit fit = fit_chain_points(cg.points, start, end, o_, guides);
             corner_chain_[c] = fit.method == ChainMethod::corners ? 1 : 0;
+            beyond_limit_[c] = fit.beyond_limit ? 1 : 0;
             chain_spliced_[c] = fit.spliced_ends;
             chain_patched_[c] = fit.patched_stretches;
             chain_noise_[c] = fit.noise_sigma_m;
@@ -466,6 +471,7 @@ private:
         net.untied_branch_ends = untied_;
         net.degenerate_chains = degenerate_;
         net.corner_chains = fallback_;
+        net.beyond_limit_chains = beyond_;
         net.spliced_ends = spliced_;
         net.patched_stretches = patched_;
         net.chain_noise_sigma_m = chain_noise_;
@@ -507,6 +513,7 @@ private:
     std::vector<std::size_t> completion_;
     // Per chain, written by the thread fitting it.
     std::vector<char> corner_chain_;
+    std::vector<char> beyond_limit_;
     std::vector<char> chain_degenerate_;
     std::vector<std::size_t> chain_spliced_;
     std::vector<std::size_t> chain_patched_;
@@ -516,6 +523,7 @@ private:
     std::size_t untied_ = 0;
     std::size_t degenerate_ = 0;
     std::vector<std::size_t> fallback_;
+    std::vector<std::size_t> beyond_;
     std::size_t spliced_ = 0;
     std::size_t patched_ = 0;
     struct CycleEnd {

@@ -60,6 +60,10 @@ struct FittedNetwork {
     // because every railway fit strayed over 2 m from a mapped node; still G2,
     // links included.
     std::vector<std::size_t> corner_chains;
+    // Chains kept as railway fits with nodes beyond that limit: the corners
+    // that would follow them turn tighter than R 10 m (a branch drawn onto
+    // its through track at an angle across the switch).
+    std::vector<std::size_t> beyond_limit_chains;
     // Tied chain ends whose last ~40 m the corner construction rebuilt: the
     // railway fit missed the tied pose (no model of the last window could
     // meet it as a constraint), or followed the nodes better with that end
