@@ -82,6 +82,20 @@ TEST(GeometryCornerFit, SharpCornerIsG2AndPassesCloseToTheVertex) {
     EXPECT_LT(peak, 1.0 / 0.25); // a real corner, not a turn on the spot
 }
 
+// A kink of a milliradian between two straights (Krems has one): at the
+// widest radius, 1000 m, its corner was three pieces of 0.5 m; widened
+// until each is a metre, it still passes the vertex within a millimetre.
+TEST(GeometryCornerFit, ASlightKinkTakesPiecesOfAMetre) {
+    const std::vector<Point> pts{{0, 0}, {400, 0}, {400 + 400 * std::cos(0.001), 400 * std::sin(0.001)}};
+    const Alignment a = corner_polyline(pts, std::nullopt, std::nullopt, {});
+    expect_g2(a);
+    ASSERT_EQ(a.primitives.size(), 5u);
+    for (std::size_t i = 1; i < 4; ++i) {
+        EXPECT_GE(a.primitives[i].length, 1.0 - 1e-9) << i;
+    }
+    EXPECT_LE(max_distance(a, pts), 1e-3);
+}
+
 TEST(GeometryCornerFit, TramTrackIsG2WithinTheBound) {
     const std::vector<Point> pts = tram_polyline();
     for (const double bound : {0.1, 0.25, 0.5}) {

@@ -18,6 +18,11 @@ namespace {
 // of a circular fillet in the same room.
 constexpr double spiral_share = 0.5;
 
+// No piece of a corner is shorter where the room allows: a slight bend at
+// the widest radius is pieces of a fraction of a metre (a 1 mrad kink
+// between two straights of Krems: three of 0.5 m), which no design has.
+constexpr double min_piece_m = 1.0;
+
 struct UnitShape {
     double spiral = 0.0;    // length of each spiral at unit curvature
     double arc = 0.0;       // length of the arc at unit curvature
@@ -54,7 +59,8 @@ Corner make_corner(double deflection, const CornerLimits& limits) {
         throw std::invalid_argument("make_corner: needs a deflection below pi and room for the corner");
     }
     const UnitShape u = unit_shape(turn);
-    const double scale = std::min({limits.tangent_m / u.tangent, limits.deviation_m / u.deviation, limits.max_radius_m});
+    const double widest = std::max(limits.max_radius_m, min_piece_m / std::min(u.spiral, u.arc));
+    const double scale = std::min({limits.tangent_m / u.tangent, limits.deviation_m / u.deviation, widest});
     const double k = std::copysign(1.0 / scale, deflection);
     c.tangent = u.tangent * scale;
     c.deviation = u.deviation * scale;

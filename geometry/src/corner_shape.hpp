@@ -14,7 +14,8 @@ namespace railodd::geometry::corner {
 struct CornerLimits {
     double tangent_m = 0.0;                                       // vertex to each end of the corner
     double deviation_m = std::numeric_limits<double>::infinity(); // vertex to the curve
-    double max_radius_m = 1000.0;                                 // of the arc (1 / peak curvature)
+    double max_radius_m = 1000.0;                                 // of the arc (1 / peak curvature), but wider
+                                                                  // where its pieces would be under a metre
 };
 
 struct Corner {
