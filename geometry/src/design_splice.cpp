@@ -67,9 +67,9 @@ std::vector<fit::Point2> as_points(const std::vector<Point>& p) {
 }
 
 // The design of n curves over the stretch, where the solve converges,
-// meets the tied pose, turns as a track can and loops nowhere; with how
-// far it passes from the nodes and their polyline (left unmeasured past
-// `tolerance_m`: the polyline's test is the dearer).
+// meets the tied pose, passes the nodes within `tolerance_m`, turns as a
+// track can and loops nowhere; with how far it passes from the nodes and
+// their polyline.
 struct Design {
     Alignment alignment;
     double off_m = 0.0;

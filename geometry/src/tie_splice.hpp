@@ -1,7 +1,8 @@
 #pragma once
 // Making a fitted chain meet a tied end pose exactly: the stretch of the fit
 // next to that end is replaced by a few curves of design (design_splice.hpp)
-// or, where none follows its nodes, the corner construction (corner_fit.hpp),
+// or, where none follows its nodes, the corner construction (corner_fit.hpp)
+// where it turns as a track can,
 // from the fit's own pose where the stretch begins to the tied pose. The rest
 // of the fit is kept as it is, and the joint is G2 because the construction
 // starts (or ends) with the fit's pose and curvature there.
@@ -27,7 +28,9 @@ double off_polyline(const Alignment& piece, std::vector<Point> nodes);
 // points: the chain's mapped nodes in order. The spliced stretch covers the
 // nodes within tail_m of the end (at least the last segment). It is a few
 // curves of railway design (design_splice.hpp) where one passes its nodes
-// within design_tolerance_m, else corners within the options' deviation.
+// within design_tolerance_m, else corners within the options' deviation;
+// where those turn tighter than a track can, the design closest to the
+// nodes (closest_design_splice), however far, if one meets both poses.
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& points, const Pose& start, double tail_m,
                        const CornerFitOptions& options, double design_tolerance_m);
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& points, const Pose& end, double tail_m,
