@@ -2,10 +2,10 @@
 // Making a fitted chain meet a tied end pose exactly: the stretch of the fit
 // next to that end is replaced by a few curves of design (design_splice.hpp)
 // or, where none follows its nodes, the corner construction (corner_fit.hpp)
-// where it turns as a track can,
-// from the fit's own pose where the stretch begins to the tied pose. The rest
-// of the fit is kept as it is, and the joint is G2 because the construction
-// starts (or ends) with the fit's pose and curvature there.
+// where it turns as a track can, from the fit's own pose where the stretch
+// begins to the tied pose. The rest of the fit is kept as it is, and the
+// joint is G2 because the construction starts (or ends) with the fit's pose
+// and curvature there.
 #include "railodd/geometry/corner_fit.hpp"
 #include "railodd/geometry/indexed_alignment.hpp"
 
