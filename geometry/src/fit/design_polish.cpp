@@ -254,10 +254,10 @@ bool solved_without(Apex& a, const std::vector<std::size_t>& js, const DesignPas
 // The polished design without the arcs it shrank to nothing between two
 // transitions (a curve whose transitions meet at its apex): all at once,
 // else one at a time, each kept where the nodes allow (solved_without);
-// again while a solve without some shrinks others (Cologne: 79 such arcs
-// at the solver's 0.5 m floor were left where one arc was taken out of a
-// chain and the solve shrank the next, or one the nodes hold kept every
-// other). Issue 37 asks for no element under a metre the design lacks.
+// again while a solve without some shrinks others. Taken all or none, once,
+// Cologne kept 76 such arcs mid-chain (30 now): one arc the nodes hold kept
+// every other of its chain, or the solve without one shrank the next.
+// Issue 37 asks for no element under a metre the design lacks.
 std::optional<FitResult> without_collapsed_arcs(const DesignPass& pass, const CurvatureModel& m, const SolveOptions& so,
                                                 const std::vector<Point2>& p, const std::vector<Point>& all,
                                                 const SolveReport& polished, double limit) {
