@@ -92,7 +92,6 @@ TEST(DesignPolish, TransitionsMeetingAtTheApexKeepNoArcBetweenThem) {
     }
 }
 
-
 // Several such curves along one chain, on nodes 8-20 m apart: the polish
 // shrank each arc to its floor, and taking them all out at once, or one of
 // them, can leave the solve shrinking another (Cologne: 76 arcs at the

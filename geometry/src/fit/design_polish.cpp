@@ -276,10 +276,16 @@ std::optional<FitResult> without_collapsed_arcs(const DesignPass& pass, const Cu
             kept = std::move(at_once);
             continue;
         }
+        if (js.size() == 1) {
+            break; // one at a time is the solve just refused
+        }
         const std::size_t before = kept.taken;
         for (const std::size_t j : js) {
+            if (kept.m.lengths[j] >= collapsed_arc_m) {
+                continue; // grown back where the arcs after it went
+            }
             Apex one = kept;
-            if (one.m.lengths[j] < collapsed_arc_m && solved_without(one, {j}, pass, p, all, polished, limit)) {
+            if (solved_without(one, {j}, pass, p, all, polished, limit)) {
                 kept = std::move(one);
             }
         }
