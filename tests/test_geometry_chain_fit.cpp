@@ -126,3 +126,38 @@ TEST(ChainFit, AShortCurveMeetingItsSwitchAtAnAngleTurnsAsATrackCan) {
         EXPECT_LT(m.curvature, 1e-9);
     }
 }
+
+// A ring with no switch on it (Cologne has two, 1.9 and 2.0 km): a stadium
+// of two R 150 m curves with 40 m transitions between 200 m straights, its
+// first and last node one. Its feet at the curve's two ends cannot be told
+// apart, and the fit was taken for one that loops back: the ring was built
+// by corners (Cologne: 456 elements on one). It keeps its design now, and
+// runs on round: its end meets its own start, G2.
+TEST(ChainFit, ARingKeepsItsDesignAndClosesOnItself) {
+    geometry::Alignment d;
+    d.start = {0.0, 0.0, 0.0, 0.0};
+    const double k = 1.0 / 150.0, arc = (std::acos(-1.0) - 40.0 * k) / k;
+    d.primitives = {geometry::make_line(100.0)};
+    for (int half = 0; half < 2; ++half) {
+        d.primitives.push_back(geometry::make_spiral(40.0, 0.0, k));
+        d.primitives.push_back(geometry::make_arc(arc, k));
+        d.primitives.push_back(geometry::make_spiral(40.0, k, 0.0));
+        d.primitives.push_back(geometry::make_line(half == 0 ? 200.0 : 100.0));
+    }
+    std::vector<geometry::Point> p;
+    const double len = geometry::length(d);
+    for (int i = 0; i * 20.0 < len - 10.0; ++i) {
+        const geometry::Pose q = geometry::evaluate(d, i * 20.0);
+        const double off = 0.05 * ((i % 3) - 1);
+        p.push_back({q.x - off * std::sin(q.hdg), q.y + off * std::cos(q.hdg)});
+    }
+    p.push_back(p.front());
+    const geometry::ChainFit f = geometry::fit_chain_points(p, std::nullopt, std::nullopt, design_search());
+    EXPECT_NE(f.method, geometry::ChainMethod::corners);
+    EXPECT_LE(f.alignment.primitives.size(), 14u);
+    EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 0.3);
+    const geometry::EndMiss m = geometry::end_miss(f.alignment, geometry::evaluate(f.alignment, 0.0));
+    EXPECT_LT(m.gap_m, 1e-4);
+    EXPECT_LT(m.heading_rad, 1e-6);
+    EXPECT_LT(m.curvature, 1e-9);
+}

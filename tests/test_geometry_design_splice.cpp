@@ -3,6 +3,7 @@
 #include "chain_fit.hpp"
 #include "design_fit_support.hpp"
 #include "design_splice.hpp"
+#include "tie_splice.hpp"
 #include "railodd/geometry/corner_fit.hpp"
 
 #include <gtest/gtest.h>
@@ -139,4 +140,51 @@ TEST(DesignSplice, AMunichJunctionCurveSplicedAsDesign) {
     }
     EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 1.0);
     expect_meets(f.alignment, start, end);
+}
+
+// A Munich chain of 8 nodes over 16 m between two switches
+// (valhalla_munchen, chain 30 from node 1688834624), whose ties the nodes
+// contradict: the start tie 3.6 m off the first node, the two poses 96
+// degrees apart 14 m apart. No curve of R 10 m joins them; the corners did,
+// through every node at R 0.2 m (21 elements, 15 under a metre). Now the
+// design that joins them turning least tightly: every element a metre or
+// longer, no tighter than R 2.5 m, both poses met.
+TEST(DesignSplice, PosesNoTrackCanJoinGetTheLeastTightDesign) {
+    const std::vector<geometry::Point> p = {{334.2304, -846.1912}, {333.1287, -845.0460}, {330.7244, -842.7222},
+                                            {326.8166, -840.7432}, {324.5166, -839.6870}, {322.8270, -839.2201},
+                                            {321.4723, -839.0422}, {319.8348, -838.9867}};
+    const geometry::Pose start{330.7984, -847.4499, -4.360855, -0.0436311};
+    const geometry::Pose end{319.7810, -838.8789, -2.679322, 0.0};
+    const geometry::ChainFit f = geometry::fit_chain_points(p, start, end, test::design_search());
+    EXPECT_LE(f.alignment.primitives.size(), 8u);
+    for (const geometry::Primitive& q : f.alignment.primitives) {
+        EXPECT_GE(q.length, 1.0 - 1e-9) << geometry::to_string(q.kind);
+    }
+    EXPECT_FALSE(geometry::drivable(f.alignment));
+    EXPECT_LE(geometry::peak_curvature(f.alignment), 0.4 + 1e-9);
+    expect_meets(f.alignment, start, end);
+}
+
+// The fit is cut for a splice at the foot of the stretch's first node, here
+// 0.4 m past a knot: the kept side kept a 0.4 m sliver of the arc beyond
+// it (Munich: 2 of its 11 elements under a metre). The cut moves to the
+// knot; the end is met exactly and no element is under a metre.
+TEST(DesignSplice, ASpliceLeavesNoSliverOfTheFitItCuts) {
+    geometry::Alignment fit;
+    fit.start = {0.0, 0.0, 0.2, 0.0};
+    fit.primitives = {geometry::make_line(99.6), geometry::make_arc(16.4, 0.002)};
+    std::vector<geometry::Point> p;
+    for (const double s : {0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0, 90.0, 100.0, 108.0, 116.0}) {
+        const geometry::Pose q = geometry::evaluate(fit, s);
+        p.push_back({q.x, q.y});
+    }
+    geometry::Pose end = geometry::evaluate(fit, 116.0);
+    end.x -= 0.3 * std::sin(end.hdg);
+    end.y += 0.3 * std::cos(end.hdg);
+    const geometry::Alignment a = geometry::splice_end(fit, p, end, 10.0, geometry::CornerFitOptions{1000.0, 0.25}, 1.0);
+    for (const geometry::Primitive& q : a.primitives) {
+        EXPECT_GE(q.length, 1.0 - 1e-9) << geometry::to_string(q.kind);
+    }
+    EXPECT_NEAR(a.primitives.front().length, 99.6, 1e-9);
+    expect_meets(a, fit.start, end);
 }

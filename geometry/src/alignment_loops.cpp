@@ -17,6 +17,10 @@ namespace railodd::geometry {
 // between their feet than the nodes lie apart (Cologne: 567 m between the
 // last two nodes of a 12 km chain, 24 m apart, the chain 4.6 % longer than
 // its nodes' polyline).
+bool closes_on_itself(const std::vector<Point>& p) {
+    return p.size() > 2 && p.front().x == p.back().x && p.front().y == p.back().y;
+}
+
 bool loops_back(const Alignment& a, const std::vector<Point>& p) {
     double turning = 0.0;
     for (const Primitive& q : a.primitives) {
@@ -26,9 +30,14 @@ bool loops_back(const Alignment& a, const std::vector<Point>& p) {
         return true;
     }
     const IndexedAlignment ia(a);
+    // A ring's first and last node are one: its feet are the curve's two
+    // ends, which a projection cannot tell apart (Cologne: two rings of 1.9
+    // and 2.0 km, each then built by corners).
+    const bool ring = closes_on_itself(p);
     double last = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const double s = ia.project(p[i].x, p[i].y).s;
+        const bool end = ring && (i == 0 || i + 1 == p.size());
+        const double s = end ? (i == 0 ? 0.0 : ia.length()) : ia.project(p[i].x, p[i].y).s;
         if (i > 0 && std::abs(s - last) > 2.0 * std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y) + 50.0) {
             return true;
         }

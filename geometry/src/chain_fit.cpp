@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace railodd::geometry {
 
@@ -68,6 +69,24 @@ bool may_replace(const Alignment& kept, const Alignment& candidate) {
 
 bool misses(const EndMiss& m) {
     return m.gap_m > max_gap_m || m.heading_rad > max_heading_rad || m.curvature > max_curvature;
+}
+
+// A ring (a chain closed on itself with no switch on it: first and last
+// node one) has its end brought onto its own start, so that it runs on
+// round without a kink.
+void close_ring(ChainFit& f, const std::vector<Point>& p, const std::optional<Pose>& start,
+                const std::optional<Pose>& end, double limit) {
+    // No track runs round a shorter ring than a circle of its tightest
+    // curve (VDE 8.2 has two of 3-4 m, mapping slips).
+    const double shortest = 2.0 * std::numbers::pi / max_track_curvature;
+    if (!closes_on_itself(p) || start || end || polyline_chainage(p).back() < shortest) {
+        return;
+    }
+    const Pose home = evaluate(f.alignment, 0.0);
+    if (misses(end_miss(f.alignment, home))) {
+        f.alignment = splice_end(f.alignment, p, home, miss_splice_length_m, corner_options, limit);
+        ++f.spliced_ends;
+    }
 }
 
 // The free fit with each tied end's stretch rebuilt (tie_splice.hpp): by a
@@ -233,6 +252,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
             best.alignment = splice_end(best.alignment, p, *end, miss_splice_length_m, corner_options, limit);
             ++best.spliced_ends;
         }
+        close_ring(best, p, start, end, limit);
         if (best.method == ChainMethod::railway && best.spliced_ends > 0) {
             best.method = ChainMethod::spliced;
         }

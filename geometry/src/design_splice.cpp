@@ -35,7 +35,7 @@ double polyline_heading(const std::vector<Point>& p, const std::vector<double>& 
 // a transition out to the tie's curvature; lengths in equal shares, each
 // arc's curvature the polyline's turn over its share.
 fit::CurvatureModel first_guess(const std::vector<Point>& p, const std::vector<double>& t, const Pose& from,
-                                const Pose& to, int n) {
+                                const Pose& to, int n, double max_curvature) {
     const double share = t.back() / static_cast<double>(3 * n + 1);
     fit::CurvatureModel m;
     m.start = from;
@@ -47,7 +47,7 @@ fit::CurvatureModel first_guess(const std::vector<Point>& p, const std::vector<d
         const double s = t.back() * static_cast<double>(i + 1) / static_cast<double>(n);
         const double next = i + 1 == n ? at + std::remainder(to.hdg - at, 2 * std::numbers::pi)
                                        : polyline_heading(p, t, s, at);
-        m.curv.push_back(std::clamp((next - at) / (3.0 * share), -max_track_curvature, max_track_curvature));
+        m.curv.push_back(std::clamp((next - at) / (3.0 * share), -max_curvature, max_curvature));
         at = next;
         const int v = static_cast<int>(m.curv.size()) - 1;
         m.push_segment(share, true, v);
@@ -75,7 +75,8 @@ struct Design {
     double off_m = 0.0;
 };
 std::optional<Design> design_of(int n, const std::vector<Point>& points, const std::vector<double>& t,
-                                const Pose& from, const Pose& to, double tolerance_m) {
+                                const Pose& from, const Pose& to, double tolerance_m,
+                                double max_curvature = max_track_curvature) {
     fit::SolveOptions so;
     so.sigma_m = 0.3;
     so.pin_first = false;
@@ -87,13 +88,14 @@ std::optional<Design> design_of(int n, const std::vector<Point>& points, const s
     so.geodesic_acceleration = true;
     so.abandon_loops = true;
     so.min_length_m = min_element_m;
-    fit::CurvatureModel m = first_guess(points, t, from, to, n);
+    so.max_curvature = max_curvature;
+    fit::CurvatureModel m = first_guess(points, t, from, to, n, max_curvature);
     const fit::SolveReport r = fit::solve(m, as_points(points), so);
     if (!r.end_met || r.gave_up || r.max_m > tolerance_m) {
         return std::nullopt;
     }
     Design d{m.to_alignment(), r.max_m};
-    if (!drivable(d.alignment) || loops_back(d.alignment, points)) {
+    if (peak_curvature(d.alignment) > max_curvature || loops_back(d.alignment, points)) {
         return std::nullopt;
     }
     return d;
@@ -103,11 +105,15 @@ bool room_for(int curves, double stretch) { return stretch >= min_element_m * st
 
 } // namespace
 
-bool drivable(const Alignment& a) {
-    return std::all_of(a.primitives.begin(), a.primitives.end(), [](const Primitive& e) {
-        return std::max(std::abs(e.curv_start), std::abs(e.curv_end)) <= max_track_curvature;
-    });
+double peak_curvature(const Alignment& a) {
+    double k = 0.0;
+    for (const Primitive& e : a.primitives) {
+        k = std::max({k, std::abs(e.curv_start), std::abs(e.curv_end)});
+    }
+    return k;
 }
+
+bool drivable(const Alignment& a) { return peak_curvature(a) <= max_track_curvature; }
 
 std::optional<Alignment> design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
                                        double tolerance_m) {
@@ -128,7 +134,7 @@ std::optional<Alignment> design_splice(const std::vector<Point>& points, const P
 }
 
 std::optional<Alignment> closest_design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
-                                               double max_off_m) {
+                                               double max_off_m, double max_curvature) {
     if (points.size() < 2) {
         return std::nullopt;
     }
@@ -153,7 +159,8 @@ std::optional<Alignment> closest_design_splice(const std::vector<Point>& points,
         last_kept = kept.size();
         const std::vector<double> tk = polyline_chainage(kept);
         for (int n = 1; n <= max_curves && room_for(n, t.back()); ++n) {
-            std::optional<Design> d = design_of(n, kept, tk, from, to, std::numeric_limits<double>::infinity());
+            std::optional<Design> d =
+                design_of(n, kept, tk, from, to, std::numeric_limits<double>::infinity(), max_curvature);
             if (!d || loops_back(d->alignment, points)) {
                 continue;
             }

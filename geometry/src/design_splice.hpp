@@ -15,6 +15,8 @@ namespace railodd::geometry {
 // No track turns tighter than this (R 10 m; tram curves are 15-25 m).
 constexpr double max_track_curvature = 0.1;
 
+// The largest curvature of any element, either way (1/m).
+double peak_curvature(const Alignment& a);
 // Whether every element turns as a track can (max_track_curvature).
 bool drivable(const Alignment& a);
 
@@ -29,7 +31,9 @@ std::optional<Alignment> design_splice(const std::vector<Point>& points, const P
 // within max_off_m of them: for nodes leaving a tie at an angle no track
 // can turn. The nodes next to either pose are left out of the solve where
 // they pull it into a loop or off the pose, not out of the measure.
+// `max_curvature`: what the design may turn at most (a track's, unless the
+// poses themselves ask for more).
 std::optional<Alignment> closest_design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
-                                               double max_off_m);
+                                               double max_off_m, double max_curvature = max_track_curvature);
 
 } // namespace railodd::geometry

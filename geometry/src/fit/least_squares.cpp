@@ -251,7 +251,7 @@ private:
 
     void apply(CurvatureModel& m, const Eigen::VectorXd& values) const {
         map_.set(m, std::vector<double>(values.data(), values.data() + values.size()));
-        clamp_model(m, p_.opt.min_length_m, p_.opt.min_length_at, max_length_);
+        clamp_model(m, p_.opt.min_length_m, p_.opt.min_length_at, max_length_, p_.opt.max_curvature);
     }
 
     static Eigen::VectorXd to_eigen(const std::vector<double>& v) {

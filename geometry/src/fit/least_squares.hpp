@@ -20,6 +20,7 @@ struct SolveOptions {
     double kink_sigma = 0.0;        // > 0: penalise second differences of knot curvatures by this scale (1/m)
     double ridge_sigma = 0.0;       // > 0: pull knot curvatures towards zero (lines) where data is sparse
     double min_length_m = 0.5;      // free segment lengths stay at least this long
+    double max_curvature = 0.1;     // 1/m, either way: knot curvatures stay within (R 10 m)
     // Per segment, a longer floor than min_length_m (empty: none): a
     // transition standing for a curvature jump at a switch, whose length the
     // points cannot tell (design_polish.cpp).

@@ -533,8 +533,8 @@ double total_length(const CurvatureModel& m) {
     return sum;
 }
 
-void clamp_model(CurvatureModel& m, double min_length, const std::vector<double>& min_at, double max_length) {
-    constexpr double max_curvature = 0.1;
+void clamp_model(CurvatureModel& m, double min_length, const std::vector<double>& min_at, double max_length,
+                 double max_curvature) {
     for (std::size_t j = 0; j < m.segments(); ++j) {
         if (m.length_free[j]) {
             const double floor = j < min_at.size() ? std::max(min_length, min_at[j]) : min_length;

@@ -88,5 +88,8 @@ FitQuality measure_fit(const Alignment& alignment, const std::vector<Point>& poi
 // Node distances cannot show it: a loop at the curvature bound keeps every
 // node near some part of the curve.
 bool loops_back(const Alignment& alignment, const std::vector<Point>& points);
+// Whether the points close on themselves (first and last one point): a
+// ring, whose first and last foot are the curve's two ends.
+bool closes_on_itself(const std::vector<Point>& points);
 
 } // namespace railodd::geometry
