@@ -59,7 +59,7 @@ double node_s(const Alignment& fit, const std::vector<Point>& p, const std::vect
 
 // Where the fit is cut for a splice: at node k's foot, or at the knot
 // within a metre of it on the kept side, which would otherwise keep a
-// sliver of its element (Munich: 7 of its 11 elements under a metre).
+// sliver of its element (Munich: 2 of its 11 elements under a metre).
 // `kept_before`: the fit is kept before the cut (a splice at the end).
 double cut_at(const Alignment& fit, const std::vector<Point>& p, const std::vector<double>& t, std::size_t k,
               bool kept_before) {
