@@ -9,6 +9,10 @@
 
 namespace railodd::geometry {
 
+bool closes_on_itself(const std::vector<Point>& p) {
+    return p.size() > 2 && p.front().x == p.back().x && p.front().y == p.back().y;
+}
+
 // Node distances alone cannot tell a fit that loops (a spiral at the
 // curvature bound somewhere along the way, every node still near some part
 // of the curve) from a good one; its length and total turning can
@@ -17,10 +21,6 @@ namespace railodd::geometry {
 // between their feet than the nodes lie apart (Cologne: 567 m between the
 // last two nodes of a 12 km chain, 24 m apart, the chain 4.6 % longer than
 // its nodes' polyline).
-bool closes_on_itself(const std::vector<Point>& p) {
-    return p.size() > 2 && p.front().x == p.back().x && p.front().y == p.back().y;
-}
-
 bool loops_back(const Alignment& a, const std::vector<Point>& p) {
     double turning = 0.0;
     for (const Primitive& q : a.primitives) {
