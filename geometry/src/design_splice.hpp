@@ -5,6 +5,7 @@
 // least squares with both poses held exactly. What tie_splice.hpp tries
 // before the corner construction, whose corners at every zigzag of a few
 // metres (a tram's junction curve) were sub-metre elements no design has.
+#include "fit/least_squares.hpp"
 #include "railodd/geometry/fit_alignment.hpp"
 
 #include <optional>
@@ -12,8 +13,7 @@
 
 namespace railodd::geometry {
 
-// No track turns tighter than this (R 10 m; tram curves are 15-25 m).
-constexpr double max_track_curvature = 0.1;
+using fit::max_track_curvature;
 
 // The largest curvature of any element, either way (1/m).
 double peak_curvature(const Alignment& a);

@@ -100,8 +100,9 @@ Alignment stretch(const std::vector<Point>& p, const Pose& from, const Pose& to,
         // mapping contradicts: Munich, 96 degrees in 14 m): the design that
         // joins them turning least tightly, where the corners turn tighter
         // (R 0.2 m there, 15 elements under a metre in 19 m).
+        const double corners_peak = peak_curvature(corners);
         for (const double k : relaxed_curvatures) {
-            if (k >= peak_curvature(corners)) {
+            if (k >= corners_peak) {
                 break;
             }
             if (std::optional<Alignment> a = closest_design_splice(p, from, to, off, k)) {

@@ -10,6 +10,9 @@
 
 namespace railodd::geometry::fit {
 
+// No track turns tighter than this (R 10 m; tram curves are 15-25 m).
+constexpr double max_track_curvature = 0.1;
+
 struct Point2 {
     double x = 0.0;
     double y = 0.0;
@@ -20,7 +23,7 @@ struct SolveOptions {
     double kink_sigma = 0.0;        // > 0: penalise second differences of knot curvatures by this scale (1/m)
     double ridge_sigma = 0.0;       // > 0: pull knot curvatures towards zero (lines) where data is sparse
     double min_length_m = 0.5;      // free segment lengths stay at least this long
-    double max_curvature = 0.1;     // 1/m, either way: knot curvatures stay within (R 10 m)
+    double max_curvature = max_track_curvature; // 1/m, either way: knot curvatures stay within
     // Per segment, a longer floor than min_length_m (empty: none): a
     // transition standing for a curvature jump at a switch, whose length the
     // points cannot tell (design_polish.cpp).

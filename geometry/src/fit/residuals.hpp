@@ -93,12 +93,12 @@ std::vector<double> foot_distances(const CurvatureModel& m, const std::vector<Po
 double total_length(const CurvatureModel& m);
 
 // Keeps a trial model in the range the data can support: curvature at most
-// max_curvature (SolveOptions': R 10 m, unless a splice between poses that
-// ask for more relaxes it), every free length between min_length (or its
-// segment's min_at, where longer) and max_length. Without the upper bound a
-// diverging step could make a segment kilometres long and tightly curved,
-// whose evaluation then takes minutes (seen on a replicated Cologne
-// extract).
+// max_curvature (SolveOptions': max_track_curvature, unless a splice
+// between poses that ask for more relaxes it), every free length between
+// min_length (or its segment's min_at, where longer) and max_length.
+// Without the upper bound a diverging step could make a segment kilometres
+// long and tightly curved, whose evaluation then takes minutes (seen on a
+// replicated Cologne extract).
 void clamp_model(CurvatureModel& m, double min_length, const std::vector<double>& min_at, double max_length,
                  double max_curvature);
 
