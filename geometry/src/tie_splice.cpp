@@ -115,13 +115,26 @@ Alignment stretch(const std::vector<Point>& p, const Pose& from, const Pose& to,
 
 } // namespace
 
+std::size_t splice_start_node(const std::vector<double>& t, double tail_m) {
+    std::size_t k = 0;
+    while (k + 1 < t.size() && (k == 0 || t[k] < tail_m)) {
+        ++k;
+    }
+    return k;
+}
+
+std::size_t splice_end_node(const std::vector<double>& t, double tail_m) {
+    std::size_t k = t.empty() ? 0 : t.size() - 1;
+    while (k > 0 && (k + 1 == t.size() || t.back() - t[k] < tail_m)) {
+        --k;
+    }
+    return k;
+}
+
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Pose& end, double tail_m,
                      const CornerFitOptions& o, double tolerance) {
     const std::vector<double> t = polyline_chainage(p);
-    std::size_t k = p.size() - 1;
-    while (k > 0 && (k + 1 == p.size() || t.back() - t[k] < tail_m)) {
-        --k;
-    }
+    const std::size_t k = splice_end_node(t, tail_m);
     if (k == 0) {
         // The whole chain is the stretch: keep only the fit's start pose.
         return stretch(p, evaluate(fit, 0.0), end, o, tolerance);
@@ -139,10 +152,7 @@ Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Po
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& p, const Pose& start, double tail_m,
                        const CornerFitOptions& o, double tolerance) {
     const std::vector<double> t = polyline_chainage(p);
-    std::size_t k = 0;
-    while (k + 1 < p.size() && (k == 0 || t[k] < tail_m)) {
-        ++k;
-    }
+    const std::size_t k = splice_start_node(t, tail_m);
     if (k + 1 == p.size()) {
         return stretch(p, start, evaluate(fit, length(fit)), o, tolerance);
     }

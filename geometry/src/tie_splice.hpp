@@ -31,6 +31,13 @@ double off_polyline(const Alignment& piece, std::vector<Point> nodes);
 // within design_tolerance_m, else corners within the options' deviation;
 // where those turn tighter than a track can, the design closest to the
 // nodes (closest_design_splice), however far, if one meets both poses.
+// The node at which splice_start (splice_end) cuts the fit, by the nodes'
+// chainage t: the first (last) node at least tail_m from that end, never the
+// end node itself; the last (first) node where the whole chain is the stretch.
+// The cut lies at its foot or at a knot within a metre of it on the kept side.
+std::size_t splice_start_node(const std::vector<double>& t, double tail_m);
+std::size_t splice_end_node(const std::vector<double>& t, double tail_m);
+
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& points, const Pose& start, double tail_m,
                        const CornerFitOptions& options, double design_tolerance_m);
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& points, const Pose& end, double tail_m,

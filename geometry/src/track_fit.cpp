@@ -23,11 +23,13 @@ namespace railodd::geometry {
 
 namespace {
 
-// A switch within switch_snap_m of a knot of its through track's design is
-// taken at the knot: the turnout's curve starts at the switch, and the mapped
-// node is no nearer than that to the true switch; cut off that close, the
-// element's piece on one side is a sliver no design has (VDE 8.2: 45 track
-// elements under a metre, Cologne about 300).
+// A joint (switch, diamond crossing, join) within switch_snap_m of a knot of
+// its through track's design is taken at the knot: the turnout's curve starts
+// at the switch, and the mapped node is no nearer than that to the true
+// switch; cut off that close, the element's piece on one side is a sliver no
+// design has (VDE 8.2: 45 track elements under a metre, Cologne about 300;
+// at crossings and joins Munich 6 of its 9). A crossing's point is read off
+// the mapped nodes, not the cut, so the cut may move.
 constexpr double switch_snap_m = 1.0;
 
 double at_knot_near(const std::vector<double>& knots, double s) {
@@ -348,7 +350,7 @@ private:
     // (where an edge ends or another branch is tied) lies in the stretch:
     // moving it would break those links instead.
     void tie_cycles() {
-        constexpr double tail_m = 40.0;  // as chain_fit's splices
+        constexpr double tail_m = cycle_tail_m;
         constexpr double margin_m = 5.0;
         for (const CycleEnd& ce : cycle_ends_) {
             FittedChain& f = fitted_[ce.chain];
@@ -384,6 +386,52 @@ private:
         }
     }
 
+    // Where chain c's joints lie on its alignment a. Joints are searched near
+    // where the mapped polyline puts them: a chain that loops back past
+    // itself must not hand a joint to the wrong pass.
+    void place_joints(std::size_t c, const Alignment& a) {
+        const ChainGeometry& cg = geometry_[c];
+        const IndexedAlignment ia(a, 2.0);
+        const std::vector<double> t = polyline_chainage(cg.points);
+        const double scale = t.back() > 0 ? ia.length() / t.back() : 1.0;
+        const std::vector<double> knots = primitive_s(a);
+        const auto [snap_from, snap_to] = snap_span(c, t);
+        FittedChain& f = fitted_[c];
+        double prev = 0.0;
+        for (std::size_t j = 0; j < cg.joints.size(); ++j) {
+            const Point& q = cg.points[cg.joints[j]];
+            const double at = t[cg.joints[j]];
+            const GraphEdge& e = g_.edges[chains_[c].items[j + 1].edge];
+            const std::size_t v = chains_[c].items[j + 1].reversed ? e.to : e.from;
+            double s = std::max(prev, ia.project_within(q.x, q.y, at * scale - 100.0, at * scale + 100.0).s);
+            if (at > snap_from && at < snap_to) {
+                s = std::max(prev, at_knot_near(knots, s));
+            }
+            f.joint_s.push_back(s);
+            f.vertex_s[v] = s;
+            prev = s;
+        }
+    }
+
+    // The chainage (along the mapped nodes t) within which chain c's joints
+    // may be taken at a knot: all of it, but where a cycle end is spliced
+    // once all are fitted (tie_cycles), which rebuilds the fit up to the
+    // splice's node and a metre past its foot; a joint taken at a knot there
+    // could lie on the rebuilt stretch, away from the pose its branch was
+    // tied to (Cologne: 19 of its 21 pieces under a metre cut off at a switch).
+    std::pair<double, double> snap_span(std::size_t c, const std::vector<double>& t) const {
+        constexpr double clear_m = 3.0 * switch_snap_m; // the cut's move, the snap's and the feet's spread
+        double from = -1.0, to = t.back() + 1.0;
+        for (const CycleEnd& ce : cycle_ends_) {
+            if (ce.chain == c && ce.at_start) {
+                from = t[splice_start_node(t, cycle_tail_m)] + clear_m;
+            } else if (ce.chain == c) {
+                to = t[splice_end_node(t, cycle_tail_m)] - clear_m;
+            }
+        }
+        return {from, to};
+    }
+
     // Fits chain c; only reads the chains it is tied to and writes its own
     // slots, so chains run in parallel.
     void fit_chain(std::size_t c) {
@@ -412,36 +460,8 @@ private:
             chain_outliers_[c] = fit.outliers;
             a = std::move(fit.alignment);
         }
+        place_joints(c, a);
         FittedChain& f = fitted_[c];
-        const IndexedAlignment ia(a, 2.0);
-        // Joints are searched near where the mapped polyline puts them: a
-        // chain that loops back past itself must not hand a joint to the
-        // wrong pass.
-        std::vector<double> t(cg.points.size(), 0.0);
-        for (std::size_t i = 1; i < t.size(); ++i) {
-            t[i] = t[i - 1] + std::hypot(cg.points[i].x - cg.points[i - 1].x, cg.points[i].y - cg.points[i - 1].y);
-        }
-        const double scale = t.back() > 0 ? ia.length() / t.back() : 1.0;
-        const std::vector<double> knots = primitive_s(a);
-        // A chain with a cycle end is spliced there once all are fitted
-        // (tie_cycles), which may rebuild a switch's surroundings past its
-        // tail: its switches stay where their nodes project.
-        const bool snap = std::none_of(cycle_ends_.begin(), cycle_ends_.end(),
-                                       [c](const CycleEnd& ce) { return ce.chain == c; });
-        double prev = 0.0;
-        for (std::size_t j = 0; j < cg.joints.size(); ++j) {
-            const Point& q = cg.points[cg.joints[j]];
-            const double expected = t[cg.joints[j]] * scale;
-            const GraphEdge& e = g_.edges[ch.items[j + 1].edge];
-            const std::size_t v = ch.items[j + 1].reversed ? e.to : e.from;
-            double s = std::max(prev, ia.project_within(q.x, q.y, expected - 100.0, expected + 100.0).s);
-            if (snap && g_.vertices[v].kind == VertexKind::switch_) {
-                s = std::max(prev, at_knot_near(knots, s));
-            }
-            f.joint_s.push_back(s);
-            f.vertex_s[v] = s;
-            prev = s;
-        }
         f.alignment = std::move(a);
         f.done = true;
     }
@@ -526,6 +546,7 @@ private:
     std::vector<std::size_t> beyond_;
     std::size_t spliced_ = 0;
     std::size_t patched_ = 0;
+    static constexpr double cycle_tail_m = 40.0; // as chain_fit's splices
     struct CycleEnd {
         std::size_t chain;
         std::size_t vertex;
