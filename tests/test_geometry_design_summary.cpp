@@ -32,9 +32,18 @@ TEST(DesignSummary, SharesElementsAndSignChangesOfAKnownAlignment) {
     EXPECT_NEAR(d.spiral_share, 0.15, 1e-9);
     EXPECT_NEAR(d.arc_share, 0.2, 1e-9);
     EXPECT_NEAR(d.elements_per_km, 3.5, 1e-9);
+    EXPECT_NEAR(d.joints_per_km, 3.0, 1e-9);
     EXPECT_EQ(d.short_element_share, 0.0);
     EXPECT_NEAR(d.sign_changes_per_km, 0.5, 1e-9); // the reverse curve's one
     EXPECT_EQ(d.parallel_pairs, 0u);
+    // Cut into two roads where its line ends, the line's joint is a road's
+    // end; cut inside its first arc, the arc is two elements and the joint
+    // between them a road's end.
+    const std::vector<Alignment> at_knot = split_alignment(a, {400.0});
+    EXPECT_NEAR(summarise_design(at_knot).joints_per_km, 2.5, 1e-9);
+    const std::vector<Alignment> in_arc = split_alignment(a, {650.0});
+    EXPECT_NEAR(summarise_design(in_arc).elements_per_km, 4.0, 1e-9);
+    EXPECT_NEAR(summarise_design(in_arc).joints_per_km, 3.0, 1e-9);
 }
 
 TEST(DesignSummary, ConcentricDoubleTrackAgreesEitherWay) {

@@ -204,7 +204,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
     });
     DesignSummary out;
     double length_m = 0.0, spiral_m = 0.0, arc_m = 0.0;
-    std::size_t elements = 0, short_elements = 0;
+    std::size_t elements = 0, short_elements = 0, joints = 0;
     for (const IndexedAlignment& t : tracks) {
         for (const Primitive& p : t.alignment().primitives) {
             length_m += p.length;
@@ -213,6 +213,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
             short_elements += p.length < short_element_m ? 1 : 0;
         }
         elements += t.alignment().primitives.size();
+        joints += std::max<std::size_t>(t.alignment().primitives.size(), 1) - 1;
     }
     if (length_m <= 0.0) {
         return out; // the sign changes are none (an async future joins as it goes)
@@ -221,6 +222,7 @@ DesignSummary summarise_design(const std::vector<IndexedAlignment>& tracks, bool
     out.spiral_share = spiral_m / length_m;
     out.arc_share = arc_m / length_m;
     out.elements_per_km = static_cast<double>(elements) / out.length_km;
+    out.joints_per_km = static_cast<double>(joints) / out.length_km;
     out.short_element_share = static_cast<double>(short_elements) / static_cast<double>(elements);
     SampleGrid grid;
     std::vector<Sample> curved_samples;

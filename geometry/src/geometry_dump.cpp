@@ -136,6 +136,7 @@ ordered_json design_entry(const FittedNetwork& net, const std::vector<IndexedAli
     return {{"spiral_share", round_to(d.spiral_share, 1e-4)},
             {"arc_share", round_to(d.arc_share, 1e-4)},
             {"elements_per_km", round_to(d.elements_per_km, 1e-3)},
+            {"joints_per_km", round_to(d.joints_per_km, 1e-3)},
             {"short_element_share", round_to(d.short_element_share, 1e-4)},
             {"sign_changes_per_km", round_to(d.sign_changes_per_km, 1e-3)},
             {"parallel_pairs", d.parallel_pairs},

@@ -18,6 +18,10 @@ struct DesignSummary {
     double spiral_share = 0.0; // of the length
     double arc_share = 0.0;
     double elements_per_km = 0.0;
+    // Joints between two elements inside a road, per km: where a road ends
+    // (a switch, a crossing, a tag change) is no joint (issue 37 asks at
+    // most 4 per km).
+    double joints_per_km = 0.0;
     // Elements under 1 m, as a share of all (issue 37 asks under 0.5 %):
     // mostly corners on nodes a few metres apart (docs/BENCHMARKS.md).
     double short_element_share = 0.0;
