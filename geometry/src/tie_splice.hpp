@@ -25,12 +25,6 @@ Projection node_on(const IndexedAlignment& fit, const std::vector<Point>& points
 // first and last point where the piece starts and ends), every 2 m.
 double off_polyline(const Alignment& piece, std::vector<Point> nodes);
 
-// points: the chain's mapped nodes in order. The spliced stretch covers the
-// nodes within tail_m of the end (at least the last segment). It is a few
-// curves of railway design (design_splice.hpp) where one passes its nodes
-// within design_tolerance_m, else corners within the options' deviation;
-// where those turn tighter than a track can, the design closest to the
-// nodes (closest_design_splice), however far, if one meets both poses.
 // The node at which splice_start (splice_end) cuts the fit, by the nodes'
 // chainage t: the first (last) node at least tail_m from that end, never the
 // end node itself; the last (first) node where the whole chain is the stretch.
@@ -38,6 +32,12 @@ double off_polyline(const Alignment& piece, std::vector<Point> nodes);
 std::size_t splice_start_node(const std::vector<double>& t, double tail_m);
 std::size_t splice_end_node(const std::vector<double>& t, double tail_m);
 
+// points: the chain's mapped nodes in order. The spliced stretch covers the
+// nodes within tail_m of the end (at least the last segment). It is a few
+// curves of railway design (design_splice.hpp) where one passes its nodes
+// within design_tolerance_m, else corners within the options' deviation;
+// where those turn tighter than a track can, the design closest to the
+// nodes (closest_design_splice), however far, if one meets both poses.
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& points, const Pose& start, double tail_m,
                        const CornerFitOptions& options, double design_tolerance_m);
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& points, const Pose& end, double tail_m,
