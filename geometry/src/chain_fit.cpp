@@ -80,10 +80,10 @@ bool explains_the_miss(double spliced_worst, double tied_worst, double reach, do
 // it by corners through it: 8 of the 10 worst tied truth routes at OSM-like
 // 2.0 m with outliers, 8.5-10 m off the true track there. A hook or a jog
 // moves two or more nodes off and stays judged.
-std::vector<std::size_t> with_lone_spikes(const Alignment& a, const std::vector<Point>& p,
-                                          std::vector<std::size_t> strays, double limit, double reach) {
-    const std::vector<double> d = distances(a, p);
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+// d: each node's distance from the fit.
+std::vector<std::size_t> with_lone_spikes(const std::vector<double>& d, std::vector<std::size_t> strays, double limit,
+                                          double reach) {
+    for (std::size_t i = 1; i + 1 < d.size(); ++i) {
         if (d[i] > limit && d[i - 1] <= reach && d[i + 1] <= reach) {
             strays.push_back(i);
         }
@@ -93,8 +93,8 @@ std::vector<std::size_t> with_lone_spikes(const Alignment& a, const std::vector<
     return strays;
 }
 
-double followed_max(const Alignment& a, const std::vector<Point>& p, const std::vector<std::size_t>& strays) {
-    const std::vector<double> d = distances(a, p);
+// The furthest of the distances d of the nodes that are not strays (ascending).
+double followed_max(const std::vector<double>& d, const std::vector<std::size_t>& strays) {
     double worst = 0.0;
     for (std::size_t i = 0; i < d.size(); ++i) {
         if (!std::binary_search(strays.begin(), strays.end(), i)) {
@@ -171,13 +171,8 @@ void measure(SplicedFit& s, const std::vector<Point>& p) {
         return;
     }
     const std::vector<double> d = distances(s.fit.alignment, p);
-    s.worst_all = s.worst_followed = 0.0;
-    for (std::size_t i = 0; i < d.size(); ++i) {
-        s.worst_all = std::max(s.worst_all, d[i]);
-        if (!std::binary_search(s.strays.begin(), s.strays.end(), i)) {
-            s.worst_followed = std::max(s.worst_followed, d[i]);
-        }
-    }
+    s.worst_all = d.empty() ? 0.0 : *std::max_element(d.begin(), d.end());
+    s.worst_followed = followed_max(d, s.strays);
 }
 
 // The fit with free ends, its tied stretches spliced on. Splices of design
@@ -262,9 +257,10 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     const double reach = noise_reach(p.size(), r.quality);
     const double limit = fallback_deviation_m + reach;
     if (worst > limit && std::isfinite(worst)) {
-        strays = with_lone_spikes(r.alignment, p, std::move(strays), limit, reach);
+        const std::vector<double> d = distances(r.alignment, p);
+        strays = with_lone_spikes(d, std::move(strays), limit, reach);
         best.outliers += strays.size() - r.quality.strays.size();
-        worst = followed_max(r.alignment, p, strays);
+        worst = followed_max(d, strays);
     }
     if ((start || end) && worst > retry_deviation_m + reach) {
         SplicedFit s = spliced_fit(p, start, end, o, guides, limit, worst);

@@ -350,14 +350,15 @@ private:
     // (where an edge ends or another branch is tied) lies in the stretch:
     // moving it would break those links instead.
     void tie_cycles() {
-        constexpr double tail_m = cycle_tail_m;
         constexpr double margin_m = 5.0;
         for (const CycleEnd& ce : cycle_ends_) {
             FittedChain& f = fitted_[ce.chain];
             const std::size_t t = through_.at(ce.vertex);
             const double len = length(f.alignment);
-            const auto in_tail = [&](double s) { return ce.at_start ? s < tail_m + margin_m : s > len - tail_m - margin_m; };
-            if (!fitted_[t].done || len < 2.0 * (tail_m + margin_m) ||
+            const auto in_tail = [&](double s) {
+                return ce.at_start ? s < cycle_tail_m + margin_m : s > len - cycle_tail_m - margin_m;
+            };
+            if (!fitted_[t].done || len < 2.0 * (cycle_tail_m + margin_m) ||
                 std::any_of(f.joint_s.begin(), f.joint_s.end(), in_tail)) {
                 continue;
             }
@@ -365,8 +366,8 @@ private:
             const std::vector<Point>& pts = geometry_[ce.chain].points;
             const CornerFitOptions corners{1000.0, 0.25};
             constexpr double design_m = 2.0; // as a chain's fit must follow its nodes (chain_fit.cpp)
-            Alignment a = ce.at_start ? splice_start(f.alignment, pts, p, tail_m, corners, design_m)
-                                      : splice_end(f.alignment, pts, p, tail_m, corners, design_m);
+            Alignment a = ce.at_start ? splice_start(f.alignment, pts, p, cycle_tail_m, corners, design_m)
+                                      : splice_end(f.alignment, pts, p, cycle_tail_m, corners, design_m);
             if (ce.at_start) {
                 // Only the head changed: everything after it moved by the length difference.
                 const double delta = length(a) - len;
