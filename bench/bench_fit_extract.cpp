@@ -2,8 +2,15 @@
 // (design statistics, node noise, links) and the fit's time, for the
 // windowed fit and the design search (FitMethod, fit_alignment.hpp) on the
 // same track graph. Run: build/bench/bench_fit_extract EXTRACT.osm.pbf
-// [--method windowed|design|both] [--threads N] (default both, 2 threads).
-// Prints one JSON object per method.
+// [--method windowed|design|both] [--threads N] [--shift-mm D] (default
+// both, 2 threads, no shift). Prints one JSON object per method.
+//
+// --shift-mm moves every track node and feature D mm east and 0.7 D mm north
+// in the local frame before the fit. A fit is the same up to rounding
+// wherever the frame's origin lies, so the spread of the figures over a few
+// shifts (bench/extract_spread.sh) is how far rounding alone moves them: a
+// change to the fit that moves a figure less than that is not measured by
+// one run.
 #include "railodd/geometry/dump.hpp"
 #include "railodd/geometry/track_fit.hpp"
 #include "railodd/geometry/track_graph.hpp"
@@ -17,25 +24,56 @@
 
 using namespace railodd;
 
+namespace {
+
+void shift(ingest::IngestResult& r, double dx, double dy) {
+    const auto move = [&](ingest::NodeRef& n) {
+        n.xy.x += dx;
+        n.xy.y += dy;
+    };
+    for (ingest::Way& w : r.tracks) {
+        for (auto& part : w.parts) {
+            for (ingest::NodeRef& n : part) {
+                move(n);
+            }
+        }
+    }
+    for (ingest::Feature& f : r.features) {
+        move(f.position);
+        for (ingest::NodeRef& n : f.outline) {
+            move(n);
+        }
+    }
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_fit_extract EXTRACT [--method windowed|design|both] [--threads N]\n");
+        std::fprintf(stderr,
+                     "usage: bench_fit_extract EXTRACT [--method windowed|design|both] [--threads N] [--shift-mm D]\n");
         return 2;
     }
     std::string method = "both";
     unsigned threads = 2;
+    double shift_m = 0.0;
     for (int i = 2; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--method") {
             method = argv[i + 1];
         } else if (a == "--threads") {
             threads = static_cast<unsigned>(std::stoul(argv[i + 1]));
+        } else if (a == "--shift-mm") {
+            shift_m = std::stod(argv[i + 1]) / 1000.0;
         }
     }
     ingest::IngestOptions io;
     io.road_corridor_m = 0.0;
     io.land_use = false;
-    const ingest::IngestResult r = ingest::read_osm(argv[1], io);
+    ingest::IngestResult r = ingest::read_osm(argv[1], io);
+    if (shift_m != 0.0) {
+        shift(r, shift_m, 0.7 * shift_m);
+    }
     const geometry::TrackGraph graph = geometry::build_track_graph(r.tracks, r.features);
     std::vector<std::pair<std::string, geometry::FitMethod>> runs;
     if (method != "design") {
