@@ -63,6 +63,45 @@ TEST(StretchPatch, RunsLieBetweenTheStretchesSharingTheirEnds) {
     EXPECT_EQ(runs_between({}, 41), (Ranges{{0, 40}}));
 }
 
+// A run whose fit failed joins the stretches beside it, and touching
+// stretches merge: the runs left are those that fitted.
+TEST(StretchPatch, AFailedRunJoinsTheStretchesBesideIt) {
+    const Ranges stretches{{0, 4}, {18, 26}, {37, 40}};
+    const Ranges runs = runs_between(stretches, 41);
+    EXPECT_EQ(with_failed_runs(stretches, runs, {1, 1}), stretches);
+    EXPECT_EQ(with_failed_runs(stretches, runs, {0, 1}), (Ranges{{0, 26}, {37, 40}}));
+    EXPECT_EQ(with_failed_runs(stretches, runs, {1, 0}), (Ranges{{0, 4}, {18, 40}}));
+    EXPECT_EQ(with_failed_runs(stretches, runs, {0, 0}), (Ranges{{0, 40}}));
+    EXPECT_EQ(runs_between(with_failed_runs(stretches, runs, {0, 1}), 41), (Ranges{{26, 37}}));
+    // The run at the chain's start failed: corners from the start.
+    EXPECT_EQ(with_failed_runs({{18, 22}}, runs_between({{18, 22}}, 41), {0, 1}), (Ranges{{0, 22}}));
+}
+
+// A kink the first fit missed at [18, 24] and a second run that failed
+// (nodes 30-34 zigzag 3 m): corners from node 18 to the chain's end, from
+// the pose where the first run's fit ends, within the limit of every node.
+TEST(StretchPatch, AFailedRunIsBuiltByCornersWithItsStretch) {
+    std::vector<Point> p = straight_nodes();
+    for (const std::size_t k : {20u, 21u, 22u}) {
+        p[k].y = 3.0;
+    }
+    for (const std::size_t k : {30u, 32u, 34u}) {
+        p[k].y = 3.0;
+    }
+    const Ranges missed{{18, 24}};
+    const Ranges stretches = with_failed_runs(missed, runs_between(missed, p.size()), {1, 0});
+    ASSERT_EQ(stretches, (Ranges{{18, 40}}));
+    const std::optional<Alignment> patched =
+        assemble_patched(p, stretches, {line(0.0, 180.0)}, std::nullopt, std::nullopt, {1000.0, 0.25}, 2.0);
+    ASSERT_TRUE(patched);
+    ASSERT_NO_THROW(validate(*patched));
+    EXPECT_EQ(patched->primitives.front().kind, PrimitiveKind::line);
+    EXPECT_NEAR(patched->primitives.front().length, 180.0, 1e-6);
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        EXPECT_LT(project_point(*patched, p[k].x, p[k].y).distance, 2.0) << k;
+    }
+}
+
 // Two straight runs either side of a kink of three nodes 3 m aside: the
 // corners across [18, 24] start where the first run's fit ends and end where
 // the second's begins, G2 at both joints, passing every node of the stretch.

@@ -33,6 +33,8 @@ constexpr double splice_length_m = 40.0;
 // mend; the rest of the tied fit, chosen over the splices, stays as it is.
 constexpr double miss_splice_length_m = 10.0;
 constexpr CornerFitOptions corner_options{1000.0, 0.25};
+// How many times a run fitted again may itself be patched (run_fit).
+constexpr int patch_depth = 2;
 
 // The furthest a node's noise alone takes it from the true track among n
 // nodes, at a family-wise 5 %: the two-sided normal quantile at 0.05 / n (13
@@ -192,17 +194,47 @@ SplicedFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& s
     return s;
 }
 
+bool patch(ChainFit& f, const std::vector<Point>& p, const std::vector<std::size_t>& strays, double limit,
+           const std::optional<Pose>& start, const std::optional<Pose>& end, const FitOptions& o,
+           const std::vector<IndexedAlignment>& guides, int depth);
+
 // A run fitted again on its own, with the chain's tie where it reaches a
 // tied end; kept where it follows its nodes as a chain's fit must (within
-// 2 m of what their noise explains) and loops nowhere.
+// 2 m of what their noise explains) and loops nowhere, or where it does
+// once patched in turn (`depth` more times at most).
 std::optional<Alignment> run_fit(const std::vector<Point>& run, const std::optional<Pose>& start,
                                  const std::optional<Pose>& end, const FitOptions& o,
-                                 const std::vector<IndexedAlignment>& guides) {
+                                 const std::vector<IndexedAlignment>& guides, int depth) {
     const FitResult r = fit_alignment(run, start, end, o, guides);
-    if (loops_back(r.alignment, run) || r.quality.followed_max_m > fallback_deviation_m + noise_reach(run.size(), r.quality)) {
+    if (loops_back(r.alignment, run)) {
         return std::nullopt;
     }
-    return r.alignment;
+    const double limit = fallback_deviation_m + noise_reach(run.size(), r.quality);
+    if (r.quality.followed_max_m <= limit) {
+        return r.alignment;
+    }
+    ChainFit f{r.alignment, ChainMethod::railway, 0};
+    if (depth > 0 && patch(f, run, r.quality.strays, limit, start, end, o, guides, depth - 1)) {
+        return f.alignment;
+    }
+    return std::nullopt;
+}
+
+using Ranges = std::vector<std::pair<std::size_t, std::size_t>>;
+
+// The stretches `grow` nodes wider on either side (within the chain),
+// merged where fewer than `min_run` nodes would lie between.
+Ranges widened(const Ranges& stretches, std::size_t grow, std::size_t nodes, std::size_t min_run) {
+    Ranges out;
+    for (const auto& [a, b] : stretches) {
+        const std::size_t lo = a > grow ? a - grow : 0, hi = std::min(nodes - 1, b + grow);
+        if (!out.empty() && lo < out.back().second + min_run + 1) {
+            out.back().second = hi;
+        } else {
+            out.push_back({lo, hi});
+        }
+    }
+    return out;
 }
 
 // The chain cut round the nodes its fit passes beyond `limit`
@@ -211,39 +243,54 @@ std::optional<Alignment> run_fit(const std::vector<Point>& run, const std::optio
 // built by corners throughout, one node 3 m off made a 554-node chain of
 // VDE 8.2 2,700 elements. Fitted again, not cut from the fit: the nodes it
 // missed pulled it aside (a hairpin at the end of a straight tilted the
-// straight 1.8 m among nodes 2 cm off).
+// straight 1.8 m among nodes 2 cm off). A run whose fit fails (patched in
+// turn, run_fit) is built by corners with the stretches beside it, not the
+// whole chain: one run of VDE 8.2's chain 166 (87 km, nodes 140-900 m
+// apart and 2-14 m off any design between nodes 200 and 300) sent it to
+// corners, 1,770 elements in place of 218 (shift 2 mm, docs/BENCHMARKS.md).
 bool patch(ChainFit& f, const std::vector<Point>& p, const std::vector<std::size_t>& strays, double limit,
            const std::optional<Pose>& start, const std::optional<Pose>& end, const FitOptions& o,
-           const std::vector<IndexedAlignment>& guides) {
+           const std::vector<IndexedAlignment>& guides, int depth) {
     constexpr std::size_t min_run = 4;
     std::vector<char> skip(p.size(), 0);
     for (const std::size_t i : strays) {
         skip[i] = 1;
     }
-    const auto stretches = missed_stretches(f.alignment, p, skip, limit, min_run);
-    const auto runs = runs_between(stretches, p.size());
-    if (stretches.empty() || runs.empty()) {
+    const Ranges found = missed_stretches(f.alignment, p, skip, limit, min_run);
+    if (found.empty()) {
         return false;
     }
-    std::vector<Alignment> fits;
-    for (const auto& [a, b] : runs) {
-        const std::vector<Point> run(p.begin() + static_cast<long>(a), p.begin() + static_cast<long>(b) + 1);
-        std::optional<Alignment> r =
-            run_fit(run, a == 0 ? start : std::nullopt, b + 1 == p.size() ? end : std::nullopt, o, guides);
-        if (!r) {
+    for (const std::size_t grow : {std::size_t{0}, std::size_t{4}, std::size_t{16}}) {
+        const Ranges missed = widened(found, grow, p.size(), min_run);
+        const Ranges runs = runs_between(missed, p.size());
+        if (runs.empty()) {
             return false;
         }
-        fits.push_back(std::move(*r));
+        std::vector<Alignment> fits;
+        std::vector<char> ok;
+        for (const auto& [a, b] : runs) {
+            const std::vector<Point> run(p.begin() + static_cast<long>(a), p.begin() + static_cast<long>(b) + 1);
+            std::optional<Alignment> r =
+                run_fit(run, a == 0 ? start : std::nullopt, b + 1 == p.size() ? end : std::nullopt, o, guides, depth);
+            ok.push_back(r ? 1 : 0);
+            if (r) {
+                fits.push_back(std::move(*r));
+            }
+        }
+        const Ranges stretches = with_failed_runs(missed, runs, ok);
+        if (fits.empty() || runs_between(stretches, p.size()).size() != fits.size()) {
+            return false;
+        }
+        std::optional<Alignment> a = assemble_patched(p, stretches, fits, start, end, corner_options, limit);
+        if (a && !loops_back(*a, p)) {
+            f.alignment = std::move(*a);
+            f.method = ChainMethod::patched;
+            f.patched_stretches = stretches.size();
+            f.spliced_ends = 0; // the runs are fitted with the chain's ties; a tie they miss is spliced below
+            return true;
+        }
     }
-    std::optional<Alignment> a = assemble_patched(p, stretches, fits, start, end, corner_options, limit);
-    if (!a || loops_back(*a, p)) {
-        return false;
-    }
-    f.alignment = std::move(*a);
-    f.method = ChainMethod::patched;
-    f.patched_stretches = stretches.size();
-    f.spliced_ends = 0; // the runs are fitted with the chain's ties; a tie they miss is spliced below
-    return true;
+    return false;
 }
 
 } // namespace
@@ -273,7 +320,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
             strays = std::move(s.strays);
         }
     }
-    if (worst > limit && std::isfinite(worst) && patch(best, p, strays, limit, start, end, o, guides)) {
+    if (worst > limit && std::isfinite(worst) && patch(best, p, strays, limit, start, end, o, guides, patch_depth)) {
         worst = limit;
     }
     if (worst > limit) {

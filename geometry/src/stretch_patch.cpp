@@ -62,6 +62,26 @@ std::vector<std::pair<std::size_t, std::size_t>> runs_between(
     return runs;
 }
 
+std::vector<std::pair<std::size_t, std::size_t>> with_failed_runs(
+    std::vector<std::pair<std::size_t, std::size_t>> stretches,
+    const std::vector<std::pair<std::size_t, std::size_t>>& runs, const std::vector<char>& ok) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (!ok[i]) {
+            stretches.push_back(runs[i]);
+        }
+    }
+    std::sort(stretches.begin(), stretches.end());
+    std::vector<std::pair<std::size_t, std::size_t>> merged;
+    for (const auto& r : stretches) {
+        if (!merged.empty() && r.first <= merged.back().second) {
+            merged.back().second = std::max(merged.back().second, r.second);
+        } else {
+            merged.push_back(r);
+        }
+    }
+    return merged;
+}
+
 std::optional<Alignment> assemble_patched(const std::vector<Point>& p,
                                           const std::vector<std::pair<std::size_t, std::size_t>>& stretches,
                                           const std::vector<Alignment>& run_fits, const std::optional<Pose>& start,

@@ -29,6 +29,13 @@ std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignmen
 std::vector<std::pair<std::size_t, std::size_t>> runs_between(
     const std::vector<std::pair<std::size_t, std::size_t>>& stretches, std::size_t nodes);
 
+// The stretches with the runs whose fit failed (`ok[i]` 0 for runs[i])
+// taken into them, merged where they touch: a failed run is built by
+// corners with the stretches beside it, not the whole chain. Ascending.
+std::vector<std::pair<std::size_t, std::size_t>> with_failed_runs(
+    std::vector<std::pair<std::size_t, std::size_t>> stretches,
+    const std::vector<std::pair<std::size_t, std::size_t>>& runs, const std::vector<char>& ok);
+
 // The chain assembled from the fits of the runs (runs_between, in order)
 // and the corner construction across each stretch, from the pose where the
 // fit before it ends (the chain's start tie, or free, at the chain's start)
