@@ -222,21 +222,6 @@ std::optional<Alignment> run_fit(const std::vector<Point>& run, const std::optio
 
 using Ranges = std::vector<std::pair<std::size_t, std::size_t>>;
 
-// The stretches `grow` nodes wider on either side (within the chain),
-// merged where fewer than `min_run` nodes would lie between.
-Ranges widened(const Ranges& stretches, std::size_t grow, std::size_t nodes, std::size_t min_run) {
-    Ranges out;
-    for (const auto& [a, b] : stretches) {
-        const std::size_t lo = a > grow ? a - grow : 0, hi = std::min(nodes - 1, b + grow);
-        if (!out.empty() && lo < out.back().second + min_run + 1) {
-            out.back().second = hi;
-        } else {
-            out.push_back({lo, hi});
-        }
-    }
-    return out;
-}
-
 // The chain cut round the nodes its fit passes beyond `limit`
 // (stretch_patch.hpp): corners across those stretches, the nodes between
 // fitted again. A chain that misses a few nodes keeps a design elsewhere:
@@ -256,17 +241,13 @@ bool patch(ChainFit& f, const std::vector<Point>& p, const std::vector<std::size
     for (const std::size_t i : strays) {
         skip[i] = 1;
     }
-    const Ranges found = missed_stretches(f.alignment, p, skip, limit, min_run);
-    if (found.empty()) {
-        return false;
-    }
     // Wider where a stretch's corners do not assemble within the limit:
     // chain 166's did not at shifts 3 and 4 mm (nodes 140-900 m apart),
     // and did once wider.
-    for (const std::size_t grow : {std::size_t{0}, std::size_t{4}, std::size_t{16}}) {
-        const Ranges missed = widened(found, grow, p.size(), min_run);
+    for (const std::size_t reach : {std::size_t{2}, std::size_t{6}, std::size_t{18}}) {
+        const Ranges missed = missed_stretches(f.alignment, p, skip, limit, min_run, reach);
         const Ranges runs = runs_between(missed, p.size());
-        if (runs.empty()) {
+        if (missed.empty() || runs.empty()) {
             return false;
         }
         std::vector<Alignment> fits;

@@ -23,7 +23,7 @@ void append(Alignment& out, const Alignment& a) {
 
 std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignment& fit, const std::vector<Point>& p,
                                                                   const std::vector<char>& skip, double limit,
-                                                                  std::size_t min_run) {
+                                                                  std::size_t min_run, std::size_t reach) {
     const std::vector<double> t = polyline_chainage(p);
     const IndexedAlignment ia(fit, 2.0);
     const std::size_t n = p.size();
@@ -32,7 +32,7 @@ std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignmen
         if (skip[k] || !(node_on(ia, p, t, k).distance > limit)) {
             continue;
         }
-        std::size_t a = k > 2 ? k - 2 : 0, b = std::min(n - 1, k + 2);
+        std::size_t a = k > reach ? k - reach : 0, b = std::min(n - 1, k + reach);
         a = a + 1 < min_run ? 0 : a;
         b = n - b < min_run ? n - 1 : b;
         if (!out.empty() && a + 1 < out.back().second + min_run) {

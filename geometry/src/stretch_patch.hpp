@@ -16,13 +16,13 @@
 namespace railodd::geometry {
 
 // Node ranges [a, b] round each node that `fit` passes further than `limit`
-// from: two nodes either side, run on to the chain's end, or merged with
-// the next range, where fewer than `min_run` nodes would lie between (too
-// few to fit again). Nodes flagged in `skip` (strays the fit left out) are
-// not judged. Ascending.
+// from: `reach` nodes either side, run on to the chain's end, or merged
+// with the next range, where fewer than `min_run` nodes would lie between
+// (too few to fit again). Nodes flagged in `skip` (strays the fit left out)
+// are not judged. Ascending.
 std::vector<std::pair<std::size_t, std::size_t>> missed_stretches(const Alignment& fit, const std::vector<Point>& points,
                                                                   const std::vector<char>& skip, double limit,
-                                                                  std::size_t min_run);
+                                                                  std::size_t min_run, std::size_t reach = 2);
 
 // The node runs between the stretches (each shares its end nodes with the
 // stretches beside it), in order: what is fitted again.
