@@ -69,15 +69,6 @@ struct Options {
     bool chain = false; // as the network's fit builds a chain (fit_chain_points: splices, patches, corners)
 };
 
-// Issue 37's limit on a route's largest deviation from the true centreline:
-// 1 m up to 0.3 m of noise (1.5 m on sparse nodes), 2.5 m at 1 m, 5 m at 2 m.
-double deviation_limit(double sigma, truth::Spacing spacing) {
-    if (sigma <= 0.3) {
-        return spacing == truth::Spacing::sparse ? 1.5 : 1.0;
-    }
-    return sigma <= 1.0 ? 2.5 : 5.0;
-}
-
 // The design's pose where a node's foot is: what a switch ties a chain's end to.
 geometry::Pose pose_at(const geometry::Alignment& design, const geometry::Point& node) {
     return geometry::evaluate(design, geometry::project_point(design, node.x, node.y).s);
@@ -148,7 +139,7 @@ void run_sigma(const Options& opt, double sigma) {
     long spurious = 0, routes_spurious = 0, over_1m = 0, over_limit = 0;
     long methods[4] = {0, 0, 0, 0}; // routes per geometry::ChainMethod
     std::size_t patched = 0;
-    const double limit = deviation_limit(sigma, opt.spacing);
+    const double limit = truth::deviation_limit(sigma, opt.spacing);
     double km = 0.0, seconds = 0.0;
     for (int i = 0; i < routes; ++i) {
         truth::TruthOptions o;

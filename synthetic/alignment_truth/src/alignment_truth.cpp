@@ -163,6 +163,13 @@ TruthRoute make_route(std::uint64_t seed, const TruthOptions& options) {
 
 std::size_t sign_changes(const Alignment& a) { return geometry::curvature_sign_changes(geometry::IndexedAlignment(a)); }
 
+double deviation_limit(double sigma, Spacing spacing) {
+    if (sigma <= 0.3) {
+        return spacing == Spacing::sparse ? 1.5 : 1.0;
+    }
+    return sigma <= 1.0 ? 2.5 : 5.0;
+}
+
 TruthScore score(const TruthRoute& route, const Alignment& fit) {
     TruthScore sc;
     const geometry::IndexedAlignment truth(route.design);

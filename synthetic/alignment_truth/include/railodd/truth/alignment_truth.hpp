@@ -57,4 +57,8 @@ std::size_t sign_changes(const geometry::Alignment& a);
 
 TruthScore score(const TruthRoute& route, const geometry::Alignment& fit);
 
+// Issue 37's limit on a route's largest deviation from the true centreline:
+// 1 m up to 0.3 m of noise (1.5 m on sparse nodes), 2.5 m at 1 m, 5 m at 2 m.
+double deviation_limit(double sigma, Spacing spacing);
+
 } // namespace railodd::truth
