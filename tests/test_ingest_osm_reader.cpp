@@ -92,6 +92,39 @@ TEST(IngestOsmReader, AccountingInvariantHolds) {
     EXPECT_EQ(d->reason, "none of its 2 nodes is in the input");
 }
 
+// A closed way with railway=* and an area's key outlines an area (a station's
+// landuse, a shed): dropped with the reason. A closed way without one is a
+// loop of track and stays.
+TEST(IngestOsmReader, AnAreaOutlineTaggedAsTrackIsDroppedWithItsReason) {
+    const IngestResult r = read(R"(n1 v1 x10.0000 y48.0000
+n2 v1 x10.0010 y48.0000
+n3 v1 x10.0010 y48.0010
+n4 v1 x10.0000 y48.0010
+n5 v1 x10.0020 y48.0000
+n6 v1 x10.0030 y48.0000
+n7 v1 x10.0030 y48.0010
+w1 v1 Tlanduse=railway,railway=light_rail Nn1,n2,n3,n4,n1
+w2 v1 Tbuilding=yes,railway=rail Nn2,n5,n6,n2
+w3 v1 Trailway=rail Nn5,n6,n7,n5
+w4 v1 Trailway=rail,area=yes Nn1,n2,n3,n1
+w5 v1 Trailway=rail,landuse=railway Nn1,n2,n3
+)");
+    EXPECT_EQ(r.counts.input_track_ways, 5u);
+    EXPECT_EQ(track(r, 1), nullptr);
+    EXPECT_EQ(track(r, 2), nullptr);
+    EXPECT_NE(track(r, 3), nullptr) << "a closed loop of track";
+    EXPECT_EQ(track(r, 4), nullptr);
+    EXPECT_NE(track(r, 5), nullptr) << "an open way is a track, whatever else it is tagged";
+    ASSERT_EQ(dropped_tracks(r), 3u);
+    const auto reason = [&](std::int64_t id) {
+        const auto d = std::find_if(r.dropped.begin(), r.dropped.end(), [&](const Dropped& x) { return x.id == id; });
+        return d == r.dropped.end() ? std::string{} : d->reason;
+    };
+    EXPECT_EQ(reason(1), "closed way tagged landuse=railway: an area's outline, not a track");
+    EXPECT_EQ(reason(2), "closed way tagged building=yes: an area's outline, not a track");
+    EXPECT_EQ(reason(4), "closed way tagged area=yes: an area's outline, not a track");
+}
+
 TEST(IngestOsmReader, ClippedWayKeepsContiguousPartsAndRecordsRepair) {
     const IngestResult r = read(route_opl);
     const Way* w = track(r, 103);

@@ -67,7 +67,11 @@ bool any_node_selected(const Way& way, const Selection& sel) {
 // Spatial selection and node accounting of the track ways read.
 void select_tracks(std::vector<RawWay>& raw, const NodeLocations& locs, const Selection& sel, IngestResult& result) {
     for (auto& r : raw) {
+        std::string outline = area_outline_reason(r);
         BuiltWay built = build_way(std::move(r), locator_of(locs));
+        if (built.drop_reason.empty()) {
+            built.drop_reason = std::move(outline);
+        }
         const bool unlocated = built.way.parts.empty() && built.way.missing_nodes == built.way.node_count;
         // A way of which nothing is located cannot be placed: it is kept in the
         // accounting (and dropped) rather than silently left out of the selection.

@@ -46,6 +46,22 @@ std::string overlong_segment(const Way& way) {
 
 } // namespace
 
+std::string area_outline_reason(const RawWay& raw) {
+    const bool closed = raw.refs.size() >= 4 && raw.refs.front() == raw.refs.back();
+    if (!closed) {
+        return {};
+    }
+    if (const auto a = raw.tags.find("area"); a != raw.tags.end() && a->second == "yes") {
+        return "closed way tagged area=yes: an area's outline, not a track";
+    }
+    for (const char* key : {"landuse", "building", "leisure", "amenity", "natural"}) {
+        if (const auto t = raw.tags.find(key); t != raw.tags.end()) {
+            return "closed way tagged " + t->first + "=" + t->second + ": an area's outline, not a track";
+        }
+    }
+    return {};
+}
+
 BuiltWay build_way(RawWay raw, const Locator& locate) {
     BuiltWay built;
     Way& way = built.way;
