@@ -83,7 +83,8 @@ TEST_F(ReportData, RoadsAreTheMapsReferenceLinesOnTheEarth) {
         const auto pts = undelta(r["pts"], 2);
         ASSERT_EQ(pts.size() % 2, 0u);
         const std::size_t n = pts.size() / 2;
-        EXPECT_EQ(n, std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(m.length / 10.0)) + 1)) << m.id;
+        // A road a hair over a multiple of 10 m (rounding) takes no extra sample.
+        EXPECT_EQ(n, std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(m.length / 10.0 - 1e-9)) + 1)) << m.id;
         for (std::size_t j : {std::size_t{0}, n / 2, n - 1}) {
             const auto pose = m.pose(m.length * static_cast<double>(j) / static_cast<double>(n - 1));
             const auto ll = proj.inverse({pose.x, pose.y});
