@@ -115,7 +115,7 @@ TEST(ChainFit, AStrayBesideATiedEndIsLeftOut) {
 // through with no bend a node trial saw (tied truth seeds 1026, 1050, 1110
 // and 1158: 8.3, 5.5, 7.5 and 4.4 m off, 200-560 m from a tie): the tie's
 // state past the end stands in for the kept nodes the stray tests want
-// beyond it (design_nodes.cpp, beyond_tie).
+// beyond it (design_node_tests.cpp, beyond_tie).
 TEST(ChainFit, AStrayBesideATiedEndIsLeftOutOnSparseNodes) {
     for (const int seed : {1026, 1050, 1110, 1158}) {
         const truth::TruthRoute r = test::truth_route(seed, 0.1, 0.01, truth::Spacing::sparse);
