@@ -90,7 +90,7 @@ void place_area(RawFeature& raw, const NodeLocations& locs, const FeatureContext
     f.id = raw.id;
     f.kind = std::move(raw.kind);
     f.tags = std::move(raw.tags);
-    f.area = raw.refs.size() >= 4 && raw.refs.front() == raw.refs.back();
+    f.area = is_closed(raw.refs);
     bool in_selection = false;
     for (std::int64_t ref : raw.refs) {
         if (const auto* e = locs.located(ref)) {

@@ -26,6 +26,9 @@ struct RawWay {
     bool text_repaired = false; // tag text made valid (osm_scan.hpp tags_of)
 };
 
+// Whether node references close on themselves (first = last, a ring of three or more).
+inline bool is_closed(const std::vector<std::int64_t>& refs) { return refs.size() >= 4 && refs.front() == refs.back(); }
+
 struct RawFeature {
     std::string osm_type;
     std::int64_t id = 0;

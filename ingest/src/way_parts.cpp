@@ -47,8 +47,7 @@ std::string overlong_segment(const Way& way) {
 } // namespace
 
 std::string area_outline_reason(const RawWay& raw) {
-    const bool closed = raw.refs.size() >= 4 && raw.refs.front() == raw.refs.back();
-    if (!closed) {
+    if (!is_closed(raw.refs)) {
         return {};
     }
     if (const auto a = raw.tags.find("area"); a != raw.tags.end() && a->second == "yes") {

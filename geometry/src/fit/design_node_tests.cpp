@@ -73,6 +73,8 @@ std::vector<FrameNode> kept_beside(const DesignPass& pass, std::size_t i, std::s
 
 } // namespace
 
+namespace {
+
 // Whether design d spends two or more knots between node i's neighbours.
 bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t i) {
     if (i == 0 || i + 1 >= q.size() || q[i].w == 0.0) {
@@ -83,6 +85,8 @@ bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t
     const double hi = std::max(q[i - 1].t, q[i + 1].t);
     return std::count_if(el.begin() + 1, el.end(), [&](const FrameElement& e) { return e.s0 > lo && e.s0 < hi; }) >= 2;
 }
+
+} // namespace
 
 bool bent_to(const DesignPass& pass, std::size_t i) { return bends_at(pass.design, pass.nodes, i); }
 
@@ -147,11 +151,15 @@ bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run) {
     return here * turn(first - 1) < 0.0 && here * turn(first + run) < 0.0;
 }
 
+namespace {
+
 // Node k's signed offset from the chord between nodes a and b (frame).
 double chord_offset(const std::vector<FrameNode>& q, std::size_t a, std::size_t b, std::size_t k) {
     const double u = (q[k].t - q[a].t) / (q[b].t - q[a].t);
     return q[k].z - (q[a].z + u * (q[b].z - q[a].z));
 }
+
+} // namespace
 
 // Whether nodes first..last each lie further than `far` from the chord
 // between the nodes either side of them.
@@ -194,6 +202,8 @@ double cubic_residual(const std::vector<FrameNode>& q, const std::array<std::siz
     return std::abs(q[i].z - z);
 }
 
+namespace {
+
 // Node i's distance from the cubic through the two kept nodes either side
 // of it (frame; a tied end's point beyond it counting as one); 0 where it
 // has fewer.
@@ -210,6 +220,8 @@ double trend_residual(const DesignPass& pass, std::size_t i) {
     k.push_back(pass.nodes[i]);
     return cubic_residual(k, {0, 1, 2, 3}, 4);
 }
+
+} // namespace
 
 // Whether node i lies off the trend of its kept neighbours. In a tight
 // curve on sparse nodes a stray's turn does not show against the curve's own

@@ -11,23 +11,18 @@
 
 namespace railodd::geometry::fit {
 
-// Design d spends two or more knots between node i's neighbours.
-bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t i);
+// The pass's design spends two or more knots between node i's neighbours.
 bool bent_to(const DesignPass& pass, std::size_t i);
 // d bends at node i and back (a bump or an S), not only from one curve into the next.
 bool bumps_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t i);
 // Nodes [i, i + run) stand out as a spike (run 1) or a bump (run 2) among the kept nodes.
 bool stands_out(const DesignPass& pass, std::size_t i, std::size_t run);
-// Node k's signed offset from the chord between nodes a and b.
-double chord_offset(const std::vector<FrameNode>& q, std::size_t a, std::size_t b, std::size_t k);
 // Nodes first..last each lie further than `far` from the chord between the nodes either side.
 bool off_chord(const DesignPass& pass, std::size_t first, std::size_t last, double far);
 // Node i is one of the `reach` nodes next to a free end of the chain.
 bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach);
 // Node i's distance from Lagrange's cubic through nodes k.
 double cubic_residual(const std::vector<FrameNode>& q, const std::array<std::size_t, 4>& k, std::size_t i);
-// Node i's distance from the cubic through the two kept nodes either side of it.
-double trend_residual(const DesignPass& pass, std::size_t i);
 // Node i lies off the trend of its kept neighbours, by twice `far`.
 bool off_trend(const DesignPass& pass, std::size_t i, double far);
 // Nodes i and i + 1 each lie off the chord of the kept nodes around them, on opposite sides.
