@@ -51,6 +51,10 @@ void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
 // to corners through it (OSM-like truth routes at 0.1 m tied at both ends:
 // 7.7 m off).
 std::vector<char> strays(const std::vector<double>& weight, bool tied_start = false, bool tied_end = false);
+// strays() of a fitted design `a`: a left-out node it passes within four
+// sigma of `all` (its mapped node) counts as followed.
+std::vector<char> fitted_strays(const Alignment& a, const std::vector<Point>& all, const std::vector<double>& weight,
+                                double sigma, bool tied_start, bool tied_end);
 // The furthest node the design follows: every node but the strays.
 double followed_max(const Alignment& a, const std::vector<Point>& all, const std::vector<char>& stray);
 
