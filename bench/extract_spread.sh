@@ -29,6 +29,7 @@ figures = [
     ("node distance max (m)", lambda r: r["summary"]["node_distance_max_m"]),
     ("spliced ends", lambda r: r["summary"]["links"]["spliced_ends"]),
     ("corner chains", lambda r: r["summary"]["links"]["corner_chains"]),
+    ("switch nodes off their fit", lambda r: r["switch_nodes_off"]),
 ]
 print("%s: %d shifts" % (sys.argv[1], len(runs)))
 for name, get in figures:
