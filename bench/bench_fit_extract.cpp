@@ -55,12 +55,14 @@ std::size_t switch_nodes_off(const geometry::TrackGraph& graph, const geometry::
     std::size_t off = 0;
     for (const geometry::FittedEdge& e : net.edges) {
         const geometry::GraphEdge& ge = graph.edges[e.edge];
+        std::vector<geometry::Point> ends;
         for (const bool at_end : {false, true}) {
-            if (graph.vertices[at_end ? ge.to : ge.from].kind != geometry::VertexKind::switch_) {
-                continue;
+            if (graph.vertices[at_end ? ge.to : ge.from].kind == geometry::VertexKind::switch_) {
+                const auto& n = at_end ? ge.nodes.back() : ge.nodes.front();
+                ends.push_back({n.xy.x, n.xy.y});
             }
-            const auto& n = at_end ? ge.nodes.back() : ge.nodes.front();
-            const double d = geometry::distances(e.alignment, {{n.xy.x, n.xy.y}}).front();
+        }
+        for (const double d : geometry::distances(e.alignment, ends)) {
             off += d > std::max(1.0, 4.0 * e.quality.noise_sigma_m) ? 1 : 0;
         }
     }

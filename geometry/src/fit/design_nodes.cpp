@@ -252,7 +252,7 @@ std::vector<Trial> take_back_trials(const DesignPass& pass, std::size_t i, doubl
 // left out, the start 32 m off on a 433 m transition).
 std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double far) {
     const std::size_t n = pass.nodes.size();
-    const auto kept = [&](std::size_t j) { return j > 0 && j < n - 1 && pass.nodes[j].w > 0.0; };
+    const auto kept = [&](std::size_t j) { return j > 0 && j + 1 < n && pass.nodes[j].w > 0.0; };
     const auto judged = [&](std::size_t j) { return !near_free_end(pass, j, 1); };
     std::vector<Trial> trials;
     for (const std::size_t j : {i - 1, i, i + 1}) {
@@ -264,7 +264,7 @@ std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double fa
     // nodes beside a jog were tried too, and a different three of them left
     // out (ChainFit.AJogInALongChainIsPatchedAndTheRestKeepsItsDesign).
     for (const std::size_t j : {i - 2, i + 2}) {
-        if (kept(j) && judged(j) && stands_out(pass, j, 1) && off_trend(pass, j, far)) {
+        if (i >= 2 && kept(j) && judged(j) && stands_out(pass, j, 1) && off_trend(pass, j, far)) {
             trials.push_back({{j}, {}});
         }
     }

@@ -19,12 +19,22 @@ namespace {
 // the nodes left far off reads them.
 constexpr double followed_within = 4.0;
 
+// Only the left-out nodes are projected: mostly there are none, and the
+// fit has measured the rest already.
 std::vector<double> left_out_after(const Alignment& a, const std::vector<Point>& all, std::vector<double> weight,
                                    double sigma) {
-    const std::vector<double> d = distances(a, all);
-    for (std::size_t i = 0; i < weight.size() && i < d.size(); ++i) {
-        if (weight[i] == 0.0 && d[i] <= followed_within * sigma) {
-            weight[i] = 1.0;
+    std::vector<std::size_t> out;
+    std::vector<Point> at;
+    for (std::size_t i = 0; i < weight.size() && i < all.size(); ++i) {
+        if (weight[i] == 0.0) {
+            out.push_back(i);
+            at.push_back(all[i]);
+        }
+    }
+    const std::vector<double> d = distances(a, at);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        if (d[k] <= followed_within * sigma) {
+            weight[out[k]] = 1.0;
         }
     }
     return weight;
