@@ -247,6 +247,21 @@ bool off_trend(const DesignPass& pass, std::size_t i, double far) {
     return !near_free_end(pass, i, 3) && trend_residual(pass, i) > 2.0 * far;
 }
 
+// Whether left-out node i lies on the trend of the kept nodes beyond its
+// neighbours: within twice the biweight cut of the cubic through two kept
+// nodes before node i - 1 and two after node i + 1. Where there are fewer,
+// nothing tells, and it counts as on the trend.
+bool on_trend_beyond(const DesignPass& pass, std::size_t i, double far) {
+    std::vector<FrameNode> k = kept_beside(pass, i - 1, 1, 2, true);
+    const std::vector<FrameNode> after = kept_beside(pass, i + 1, 1, 2, false);
+    if (k.size() < 2 || after.size() < 2) {
+        return true;
+    }
+    k.insert(k.end(), after.begin(), after.end());
+    k.push_back(pass.nodes[i]);
+    return cubic_residual(k, {0, 1, 2, 3}, 4) <= 2.0 * far;
+}
+
 // Whether nodes i and i + 1 zigzag: each off the chord between the kept
 // nodes either side of them, on opposite sides of it. The spike and bump
 // tests do not see them (each is the other's neighbour, and the line

@@ -25,6 +25,8 @@ bool near_free_end(const DesignPass& pass, std::size_t i, std::size_t reach);
 double cubic_residual(const std::vector<FrameNode>& q, const std::array<std::size_t, 4>& k, std::size_t i);
 // Node i lies off the trend of its kept neighbours, by twice `far`.
 bool off_trend(const DesignPass& pass, std::size_t i, double far);
+// Left-out node i lies on the trend of the kept nodes beyond its two neighbours.
+bool on_trend_beyond(const DesignPass& pass, std::size_t i, double far);
 // Nodes i and i + 1 each lie off the chord of the kept nodes around them, on opposite sides.
 bool zigzag(const DesignPass& pass, std::size_t i, double far);
 
