@@ -84,9 +84,9 @@ bool explains_the_miss(double spliced_worst, double tied_worst, double reach, do
 // moves two or more nodes off and stays judged.
 // d: each node's distance from the fit.
 std::vector<std::size_t> with_lone_spikes(const std::vector<double>& d, std::vector<std::size_t> strays, double limit,
-                                          double reach) {
+                                          double reach, const std::vector<std::size_t>& held) {
     for (std::size_t i = 1; i + 1 < d.size(); ++i) {
-        if (d[i] > limit && d[i - 1] <= reach && d[i + 1] <= reach) {
+        if (d[i] > limit && d[i - 1] <= reach && d[i + 1] <= reach && !std::binary_search(held.begin(), held.end(), i)) {
             strays.push_back(i);
         }
     }
@@ -280,8 +280,9 @@ bool patch(ChainFit& f, const std::vector<Point>& p, const std::vector<std::size
 } // namespace
 
 ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>& start,
-                          const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides) {
-    const FitResult r = fit_alignment(p, start, end, o, guides);
+                          const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides,
+                          const std::vector<std::size_t>& held) {
+    const FitResult r = fit_alignment(p, start, end, o, guides, held);
     double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.followed_max_m;
     ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m, r.quality.outliers};
     std::vector<std::size_t> strays = r.quality.strays;
@@ -289,7 +290,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     const double limit = fallback_deviation_m + reach;
     if (worst > limit && std::isfinite(worst)) {
         const std::vector<double> d = distances(r.alignment, p);
-        strays = with_lone_spikes(d, std::move(strays), limit, reach);
+        strays = with_lone_spikes(d, std::move(strays), limit, reach, held);
         best.outliers += strays.size() - r.quality.strays.size();
         worst = followed_max(d, strays);
     }

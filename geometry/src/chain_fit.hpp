@@ -31,9 +31,10 @@ struct ChainFit {
     bool beyond_limit = false;
 };
 
-// guides: parallel tracks' fitted alignments (fit_alignment.hpp).
+// guides: parallel tracks' fitted alignments; held: indices of points never
+// taken for strays, ascending (fit_alignment.hpp).
 ChainFit fit_chain_points(const std::vector<Point>& points, const std::optional<Pose>& start,
                           const std::optional<Pose>& end, const FitOptions& options,
-                          const std::vector<IndexedAlignment>& guides = {});
+                          const std::vector<IndexedAlignment>& guides = {}, const std::vector<std::size_t>& held = {});
 
 } // namespace railodd::geometry

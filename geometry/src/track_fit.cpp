@@ -51,6 +51,7 @@ double at_knot_near(const std::vector<double>& knots, double s) {
 struct ChainGeometry {
     std::vector<Point> points;
     std::vector<std::size_t> joints; // index in points of each interior joint vertex
+    std::vector<std::size_t> held;   // those joints at a switch (fit_alignment.hpp)
 };
 
 ChainGeometry chain_points(const TrackGraph& g, const Chain& c) {
@@ -62,6 +63,10 @@ ChainGeometry chain_points(const TrackGraph& g, const Chain& c) {
             const auto& node = nodes[c.items[i].reversed ? n - 1 - k : k];
             if (k == 0 && i > 0) {
                 cg.joints.push_back(cg.points.size() - 1); // shared with the previous edge's last node
+                const GraphEdge& e = g.edges[c.items[i].edge];
+                if (g.vertices[c.items[i].reversed ? e.to : e.from].kind == VertexKind::switch_) {
+                    cg.held.push_back(cg.points.size() - 1);
+                }
                 continue;
             }
             cg.points.push_back({node.xy.x, node.xy.y});
@@ -452,7 +457,7 @@ private:
             for (const std::size_t g : guide_[c]) {
                 guides.emplace_back(fitted_[g].alignment, 2.0);
             }
-            ChainFit fit = fit_chain_points(cg.points, start, end, o_, guides);
+            ChainFit fit = fit_chain_points(cg.points, start, end, o_, guides, cg.held);
             corner_chain_[c] = fit.method == ChainMethod::corners ? 1 : 0;
             beyond_limit_[c] = fit.beyond_limit ? 1 : 0;
             chain_spliced_[c] = fit.spliced_ends;

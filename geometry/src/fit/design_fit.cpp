@@ -173,7 +173,15 @@ std::vector<double> knots_around(const std::vector<FrameElement>& st) {
 struct Ties {
     std::optional<Pose> start, end;
     const std::vector<IndexedAlignment>* guides = nullptr; // parallel tracks fitted before (design_guide.hpp)
+    std::vector<char> held;                                 // per node: never left out (fit_alignment.hpp)
 };
+
+// A held node keeps its whole weight.
+void hold(std::vector<double>& weight, const std::vector<char>& held) {
+    for (std::size_t i = 0; i < held.size() && i < weight.size(); ++i) {
+        weight[i] = held[i] ? 1.0 : weight[i];
+    }
+}
 
 // What a pass searches: the whole structure (with the previous pass's
 // design, where given, as a rival), or from the previous pass's structure
@@ -388,12 +396,14 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     double sigma = fixed ? options.noise_sigma_m : guess;
     const ReferenceLine smooth = smooth_reference(p, smoothing_m, reference_step_m);
     screen_spikes(smooth, p, weight);
+    hold(weight, ties.held);
     DesignPass pass = run_pass(smooth, p, weight, sigma, ties, nullptr, Search::whole);
     std::vector<double> on_map = map_distances(pass.alignment, p);
     for (int round = 0; round < 4; ++round) {
         const double next = fixed ? sigma : residual_sigma(pass, weight, guess);
         const bool settled = round > 0 && std::abs(next - sigma) < 0.05 * sigma;
         std::vector<double> w = robust_weights(pass.distance, next);
+        hold(w, ties.held);
         NextPass tried = next_pass(pass, p, w, next, ties, round == 0 ? Search::whole : Search::local);
         if (pass_cost(tried.pass, tried.on_map, next) > pass_cost(pass, on_map, next) + pass.options.parameter_penalty) {
             break;
@@ -406,7 +416,7 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
             break;
         }
     }
-    settle_node_weights(pass, weight);
+    settle_node_weights(pass, weight, ties.held);
     pass = next_pass(pass, p, weight, sigma, ties, Search::windows).pass;
     std::vector<Point> all, followed;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -469,8 +479,9 @@ DesignDpOptions calibrated_options(std::size_t n) {
 }
 
 FitResult fit_design(const std::vector<Point2>& mapped, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& options, const std::vector<IndexedAlignment>& guides) {
-    return fit_with(mapped, {start, end, &guides}, options);
+                     const FitOptions& options, const std::vector<IndexedAlignment>& guides,
+                     const std::vector<char>& held) {
+    return fit_with(mapped, {start, end, &guides, held}, options);
 }
 
 } // namespace railodd::geometry::fit

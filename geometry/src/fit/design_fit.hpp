@@ -29,7 +29,9 @@ FrameDesign search_design(const std::vector<FrameNode>& nodes, DesignDpOptions o
 // p: distinct nodes in order (at least 2). options.noise_sigma_m > 0 fixes
 // the noise; else it is estimated. `guides`: parallel tracks fitted before,
 // whose curvature the design is pulled to beside them (design_guide.hpp).
+// `held` (per node, or empty): nodes never left out (fit_alignment.hpp).
 FitResult fit_design(const std::vector<Point2>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                     const FitOptions& options, const std::vector<IndexedAlignment>& guides);
+                     const FitOptions& options, const std::vector<IndexedAlignment>& guides,
+                     const std::vector<char>& held = {});
 
 } // namespace railodd::geometry::fit

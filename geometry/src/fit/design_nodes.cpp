@@ -334,14 +334,17 @@ std::optional<std::size_t> next_suspect(const DesignPass& pass, const std::vecto
 //   two nodes strays; inside a chain the smoothing spline's screen can pick
 //   the good ones beside a stray: OSM truth seed 1096 at 0.3 m, two good
 //   nodes left out 6 and 8 m off for the stray after them).
-void settle_node_weights(DesignPass& pass, std::vector<double>& weight) {
+void settle_node_weights(DesignPass& pass, std::vector<double>& weight, const std::vector<char>& held) {
     bool any = false;
     const double far = biweight_cut * pass.sigma;
     std::vector<char> tried(pass.nodes.size(), 0);
     for (std::optional<std::size_t> i; (i = next_suspect(pass, tried, far));) {
         tried[*i] = 1;
-        const std::vector<Trial> trials =
+        std::vector<Trial> trials =
             pass.nodes[*i].w == 0.0 ? take_back_trials(pass, *i, far) : stray_trials(pass, *i, far);
+        std::erase_if(trials, [&](const Trial& t) {
+            return std::any_of(t.out.begin(), t.out.end(), [&](std::size_t j) { return j < held.size() && held[j]; });
+        });
         any = take_cheapest(pass, trials, weight, far) || any;
     }
     if (any) {

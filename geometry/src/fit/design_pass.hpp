@@ -35,8 +35,8 @@ struct DesignPass {
 // Which nodes the design follows, settled by model selection (each change
 // kept where the pass's cost falls, with one parameter per node left out and
 // the strays' term, stray_cost); the pass and `weight` (per node: 0 left
-// out) updated.
-void settle_node_weights(DesignPass& pass, std::vector<double>& weight);
+// out) updated. A `held` node (per node, or empty) is never left out.
+void settle_node_weights(DesignPass& pass, std::vector<double>& weight, const std::vector<char>& held);
 
 // Which left-out nodes (weight 0) are strays (1). A chain whose left-out
 // strays lie far off is still a railway fit: the strays are the mapping's

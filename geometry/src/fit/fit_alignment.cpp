@@ -327,6 +327,28 @@ std::vector<Point2> without_repeats(const std::vector<Point>& in) {
     return out;
 }
 
+// Which of the distinct points (without_repeats) are held: a repeat holds
+// the point it repeats.
+std::vector<char> held_mask(const std::vector<Point>& in, const std::vector<std::size_t>& held, std::size_t distinct) {
+    std::vector<char> is_held(in.size(), 0), mask(distinct, 0);
+    for (const std::size_t h : held) {
+        if (h < in.size()) {
+            is_held[h] = 1;
+        }
+    }
+    std::size_t k = 0;
+    for (std::size_t i = 0, last = 0; i < in.size(); ++i) {
+        if (i > 0 && std::hypot(in[i].x - in[last].x, in[i].y - in[last].y) > 1e-6) {
+            last = i;
+            ++k;
+        }
+        if (is_held[i] && k < distinct) {
+            mask[k] = 1;
+        }
+    }
+    return mask;
+}
+
 // Headings are never wrapped along an alignment: the end target must be the
 // turn of the mapped line away from the start, not that plus 2 pi.
 std::optional<Pose> end_target(const std::vector<Point2>& p, const std::vector<double>& t,
@@ -408,13 +430,14 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
 }
 
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
-                        const std::optional<Pose>& end, const FitOptions& options, const std::vector<IndexedAlignment>& guides) {
+                        const std::optional<Pose>& end, const FitOptions& options, const std::vector<IndexedAlignment>& guides,
+                        const std::vector<std::size_t>& held) {
     const std::vector<Point2> mapped = without_repeats(points);
     if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
     }
     if (options.method == FitMethod::design_search) {
-        return fit::fit_design(mapped, start, end, options, guides);
+        return fit::fit_design(mapped, start, end, options, guides, held_mask(points, held, mapped.size()));
     }
     // Outlier nodes are left out of the fit; its quality is still measured
     // on every node, so the report shows them.

@@ -70,10 +70,12 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
 // The same with parallel tracks' fitted alignments as guides: where a
 // window's nodes run beside one (2.5-6.5 m off), its design, offset to them,
 // is a candidate (docs/geometry.md, "Parallel tracks"); the first that does
-// is taken.
+// is taken. `held`: indices of points the design search never leaves out
+// as strays (a switch's node, where three or more track ends meet: the
+// mapping's surest point, and the pose its branches are tied to).
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
                         const std::optional<Pose>& end, const FitOptions& options,
-                        const std::vector<IndexedAlignment>& guides);
+                        const std::vector<IndexedAlignment>& guides, const std::vector<std::size_t>& held = {});
 
 // Distance of every point to the alignment.
 std::vector<double> distances(const Alignment& alignment, const std::vector<Point>& points);
