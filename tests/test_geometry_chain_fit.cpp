@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 using namespace railodd;
@@ -281,6 +282,30 @@ TEST(ChainFit, AShortCurveMeetingItsSwitchAtAnAngleTurnsAsATrackCan) {
         EXPECT_LT(m.heading_rad, 1e-6);
         EXPECT_LT(m.curvature, 1e-9);
     }
+}
+
+// A Cologne tram leg (way 400045940, 22 m, eight nodes curving at about
+// R 20 m), free at its start and tied at its end to the light rail it
+// joins, whose heading there is 27 degrees past the leg's last nodes. No
+// design within the search's 15 m bound meets the tie and the nodes, and no
+// drivable splice did from the free fit's start pose: the fit kept ran
+// straight, 17 m off the nodes. The splice is the whole chain and its start
+// is free, so the start pose moves: a drivable design within 2.5 m.
+TEST(ChainFit, ATramLegTiedPastItsNodesHeadingIsSplicedFromAFreeStart) {
+    const std::vector<geometry::Point> p{{280.95, 740.64}, {279.64, 742.51}, {278.05, 745.33}, {276.59, 748.55},
+                                         {275.67, 751.77}, {275.34, 757.32}, {275.28, 759.47}, {275.60, 762.65}};
+    const geometry::Pose end{275.23, 762.90, 56.5 * std::numbers::pi / 180.0, 0.0001};
+    const geometry::ChainFit f = geometry::fit_chain_points(p, std::nullopt, end, design_search());
+    EXPECT_EQ(f.method, geometry::ChainMethod::spliced);
+    EXPECT_TRUE(geometry::drivable(f.alignment));
+    EXPECT_FALSE(f.beyond_limit);
+    EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 2.5);
+    const geometry::EndMiss m = geometry::end_miss(f.alignment, end);
+    EXPECT_LT(m.gap_m, 1e-4);
+    EXPECT_LT(m.heading_rad, 1e-6);
+    EXPECT_LT(m.curvature, 1e-9);
+    const geometry::Pose s = geometry::evaluate(f.alignment, 0.0);
+    EXPECT_LT(std::hypot(s.x - p.front().x, s.y - p.front().y), 2.5); // the free start stays at its node
 }
 
 // A ring with no switch on it (Cologne has two, 1.9 and 2.0 km): a stadium

@@ -144,11 +144,11 @@ ChainFit spliced(const Alignment& free_fit, const std::vector<Point>& p, const s
                  const std::optional<Pose>& end, double tolerance) {
     ChainFit f{free_fit, ChainMethod::spliced, 0};
     if (start) {
-        f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options, tolerance);
+        f.alignment = splice_start(f.alignment, p, *start, splice_length_m, corner_options, tolerance, !end);
         ++f.spliced_ends;
     }
     if (end) {
-        f.alignment = splice_end(f.alignment, p, *end, splice_length_m, corner_options, tolerance);
+        f.alignment = splice_end(f.alignment, p, *end, splice_length_m, corner_options, tolerance, !start);
         ++f.spliced_ends;
     }
     return f;
@@ -326,11 +326,11 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     // stretch is rebuilt from the fit's pose there to the tied pose.
     if (best.method == ChainMethod::railway || best.method == ChainMethod::patched) {
         if (start && misses(start_miss(best.alignment, *start))) {
-            best.alignment = splice_start(best.alignment, p, *start, miss_splice_length_m, corner_options, limit);
+            best.alignment = splice_start(best.alignment, p, *start, miss_splice_length_m, corner_options, limit, !end);
             ++best.spliced_ends;
         }
         if (end && misses(end_miss(best.alignment, *end))) {
-            best.alignment = splice_end(best.alignment, p, *end, miss_splice_length_m, corner_options, limit);
+            best.alignment = splice_end(best.alignment, p, *end, miss_splice_length_m, corner_options, limit, !start);
             ++best.spliced_ends;
         }
         close_ring(best, p, start, end, limit);

@@ -75,13 +75,15 @@ struct Design {
     double off_m = 0.0;
 };
 std::optional<Design> design_of(int n, const std::vector<Point>& points, const std::vector<double>& t,
-                                const Pose& from, const Pose& to, double tolerance_m,
-                                double max_curvature = max_track_curvature) {
+                                const Pose& from, const Pose& to, double tolerance_m, double max_curvature,
+                                SpliceEnds ends) {
     fit::SolveOptions so;
     so.sigma_m = 0.3;
-    so.pin_first = false;
+    so.pin_first = ends == SpliceEnds::from_free; // a free start stands at its node
     so.pin_last = true;
-    so.end = to;
+    if (ends != SpliceEnds::to_free) {
+        so.end = to;
+    }
     // Tiny problems (a few curves, a few dozen nodes): iterations are cheap,
     // and a stretch whose tie meets its nodes at an angle converges slowly.
     so.max_iterations = 100;
@@ -90,6 +92,7 @@ std::optional<Design> design_of(int n, const std::vector<Point>& points, const s
     so.min_length_m = min_element_m;
     so.max_curvature = max_curvature;
     fit::CurvatureModel m = first_guess(points, t, from, to, n, max_curvature);
+    m.start_free = ends == SpliceEnds::from_free;
     const fit::SolveReport r = fit::solve(m, as_points(points), so);
     if (!r.end_met || r.gave_up || r.max_m > tolerance_m) {
         return std::nullopt;
@@ -116,13 +119,13 @@ double peak_curvature(const Alignment& a) {
 bool drivable(const Alignment& a) { return peak_curvature(a) <= max_track_curvature; }
 
 std::optional<Alignment> design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
-                                       double tolerance_m) {
+                                       double tolerance_m, SpliceEnds ends) {
     if (points.size() < 2 || !(tolerance_m > 0.0)) {
         return std::nullopt;
     }
     const std::vector<double> t = polyline_chainage(points);
     for (int n = 1; n <= max_curves && room_for(n, t.back()); ++n) {
-        std::optional<Design> d = design_of(n, points, t, from, to, tolerance_m);
+        std::optional<Design> d = design_of(n, points, t, from, to, tolerance_m, max_track_curvature, ends);
         // Between nodes far apart a few curves can swing wide of the chord
         // and still pass every node (truth seed 1266 at 1 m: 13 m off
         // between nodes 60 m apart, at R 24 m).
@@ -134,7 +137,7 @@ std::optional<Alignment> design_splice(const std::vector<Point>& points, const P
 }
 
 std::optional<Alignment> closest_design_splice(const std::vector<Point>& points, const Pose& from, const Pose& to,
-                                               double max_off_m, double max_curvature) {
+                                               double max_off_m, double max_curvature, SpliceEnds ends) {
     if (points.size() < 2) {
         return std::nullopt;
     }
@@ -160,7 +163,7 @@ std::optional<Alignment> closest_design_splice(const std::vector<Point>& points,
         const std::vector<double> tk = polyline_chainage(kept);
         for (int n = 1; n <= max_curves && room_for(n, t.back()); ++n) {
             std::optional<Design> d =
-                design_of(n, kept, tk, from, to, std::numeric_limits<double>::infinity(), max_curvature);
+                design_of(n, kept, tk, from, to, std::numeric_limits<double>::infinity(), max_curvature, ends);
             if (!d || loops_back(d->alignment, points)) {
                 continue;
             }

@@ -86,14 +86,14 @@ EndMiss miss(const Pose& got, const Pose& want) {
 // design closest to the nodes, however far (the chain's fit chooses
 // between it and the tied fit).
 Alignment stretch(const std::vector<Point>& p, const Pose& from, const Pose& to, const CornerFitOptions& o,
-                  double tolerance) {
-    if (std::optional<Alignment> a = design_splice(p, from, to, tolerance)) {
+                  double tolerance, SpliceEnds ends = SpliceEnds::both_held) {
+    if (std::optional<Alignment> a = design_splice(p, from, to, tolerance, ends)) {
         return *a;
     }
     Alignment corners = corner_polyline(p, from, to, o);
     if (!drivable(corners)) {
         const double off = std::numeric_limits<double>::infinity();
-        if (std::optional<Alignment> a = closest_design_splice(p, from, to, off)) {
+        if (std::optional<Alignment> a = closest_design_splice(p, from, to, off, max_track_curvature, ends)) {
             return *a;
         }
         // Poses no track's curve joins (a short chain between two ties the
@@ -105,7 +105,7 @@ Alignment stretch(const std::vector<Point>& p, const Pose& from, const Pose& to,
             if (k >= corners_peak) {
                 break;
             }
-            if (std::optional<Alignment> a = closest_design_splice(p, from, to, off, k)) {
+            if (std::optional<Alignment> a = closest_design_splice(p, from, to, off, k, ends)) {
                 return *a;
             }
         }
@@ -132,12 +132,14 @@ std::size_t splice_end_node(const std::vector<double>& t, double tail_m) {
 }
 
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Pose& end, double tail_m,
-                     const CornerFitOptions& o, double tolerance) {
+                     const CornerFitOptions& o, double tolerance, bool start_free) {
     const std::vector<double> t = polyline_chainage(p);
     const std::size_t k = splice_end_node(t, tail_m);
     if (k == 0) {
-        // The whole chain is the stretch: keep only the fit's start pose.
-        return stretch(p, evaluate(fit, 0.0), end, o, tolerance);
+        // The whole chain is the stretch: only the fit's start pose is kept,
+        // and only as a first guess where the chain's start is free.
+        return stretch(p, evaluate(fit, 0.0), end, o, tolerance,
+                       start_free ? SpliceEnds::from_free : SpliceEnds::both_held);
     }
     const double s = cut_at(fit, p, t, k, true);
     const std::vector<Alignment> parts = split_alignment(fit, {s});
@@ -150,11 +152,12 @@ Alignment splice_end(const Alignment& fit, const std::vector<Point>& p, const Po
 }
 
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& p, const Pose& start, double tail_m,
-                       const CornerFitOptions& o, double tolerance) {
+                       const CornerFitOptions& o, double tolerance, bool end_free) {
     const std::vector<double> t = polyline_chainage(p);
     const std::size_t k = splice_start_node(t, tail_m);
     if (k + 1 == p.size()) {
-        return stretch(p, start, evaluate(fit, length(fit)), o, tolerance);
+        return stretch(p, start, evaluate(fit, length(fit)), o, tolerance,
+                       end_free ? SpliceEnds::to_free : SpliceEnds::both_held);
     }
     const double s = cut_at(fit, p, t, k, false);
     const std::vector<Alignment> parts = split_alignment(fit, {s});

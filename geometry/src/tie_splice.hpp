@@ -38,10 +38,12 @@ std::size_t splice_end_node(const std::vector<double>& t, double tail_m);
 // within design_tolerance_m, else corners within the options' deviation;
 // where those turn tighter than a track can, the design closest to the
 // nodes (closest_design_splice), however far, if one meets both poses.
+// Where the stretch is the whole chain and its other end is free
+// (end_free, start_free), the fit's pose there is only a first guess.
 Alignment splice_start(const Alignment& fit, const std::vector<Point>& points, const Pose& start, double tail_m,
-                       const CornerFitOptions& options, double design_tolerance_m);
+                       const CornerFitOptions& options, double design_tolerance_m, bool end_free = false);
 Alignment splice_end(const Alignment& fit, const std::vector<Point>& points, const Pose& end, double tail_m,
-                     const CornerFitOptions& options, double design_tolerance_m);
+                     const CornerFitOptions& options, double design_tolerance_m, bool start_free = false);
 
 // How far the alignment's end misses a pose: position (m), heading (rad,
 // modulo full turns) and curvature (1/m).
