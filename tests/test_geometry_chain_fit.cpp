@@ -308,6 +308,29 @@ TEST(ChainFit, ATramLegTiedPastItsNodesHeadingIsSplicedFromAFreeStart) {
     EXPECT_LT(std::hypot(s.x - p.front().x, s.y - p.front().y), 2.5); // the free start stays at its node
 }
 
+// A Cologne yard track of three nodes (way 114161114: the switch, a node
+// 616 m on at 66 degrees, the buffer stop 49 m further), tied at its
+// switch to the through track's heading, 60.4 degrees. One transition from
+// the tie bowed between the two ends and passed the middle node 10 m off:
+// its neighbours, a tied end and a free one, were taken as witnesses that
+// it was a lone spike. A free end node witnesses nothing (the fit always
+// reaches it), so the node is judged, and the tie is spliced on.
+TEST(ChainFit, TheMiddleNodeOfAThreeNodeBranchIsNoLoneSpike) {
+    const double deg = std::numbers::pi / 180.0;
+    const geometry::Point mid{616.0 * std::cos(66.0 * deg), 616.0 * std::sin(66.0 * deg)};
+    const std::vector<geometry::Point> p{
+        {0.0, 0.0}, mid, {mid.x + 49.0 * std::cos(64.0 * deg), mid.y + 49.0 * std::sin(64.0 * deg)}};
+    const geometry::Pose start{0.0, 0.0, 60.4 * deg, 0.0};
+    const geometry::ChainFit f = geometry::fit_chain_points(p, start, std::nullopt, design_search());
+    EXPECT_EQ(f.method, geometry::ChainMethod::spliced);
+    EXPECT_TRUE(geometry::drivable(f.alignment));
+    EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 1.0);
+    const geometry::EndMiss m = geometry::start_miss(f.alignment, start);
+    EXPECT_LT(m.gap_m, 1e-4);
+    EXPECT_LT(m.heading_rad, 1e-6);
+    EXPECT_LT(m.curvature, 1e-9);
+}
+
 // A ring with no switch on it (Cologne has two, 1.9 and 2.0 km): a stadium
 // of two R 150 m curves with 40 m transitions between 200 m straights, its
 // first and last node one. Its feet at the curve's two ends cannot be told

@@ -81,11 +81,17 @@ bool explains_the_miss(double spliced_worst, double tied_worst, double reach, do
 // fit's strays are. Judged as followed, the patch rebuilt the stretch round
 // it by corners through it: 8 of the 10 worst tied truth routes at OSM-like
 // 2.0 m with outliers, 8.5-10 m off the true track there. A hook or a jog
-// moves two or more nodes off and stays judged.
+// moves two or more nodes off and stays judged, and so does a node with
+// fewer than two witnesses on a side (nodes, or a tie), as for the fit's
+// own strays (design_pass.hpp): a free end node is always followed, and a
+// Cologne yard track of three nodes, tied at its switch, had its middle
+// node taken for a spike 17 m off a design that bowed between its ends.
 // d: each node's distance from the fit.
 std::vector<std::size_t> with_lone_spikes(const std::vector<double>& d, std::vector<std::size_t> strays, double limit,
-                                          double reach, const std::vector<std::size_t>& held) {
-    for (std::size_t i = 1; i + 1 < d.size(); ++i) {
+                                          double reach, const std::vector<std::size_t>& held, bool tied_start,
+                                          bool tied_end) {
+    const std::size_t first = tied_start ? 1 : 2, last_after = tied_end ? 1 : 2;
+    for (std::size_t i = first; i + last_after < d.size(); ++i) {
         if (d[i] > limit && d[i - 1] <= reach && d[i + 1] <= reach && !std::binary_search(held.begin(), held.end(), i)) {
             strays.push_back(i);
         }
@@ -290,7 +296,7 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
     const double limit = fallback_deviation_m + reach;
     if (worst > limit && std::isfinite(worst)) {
         const std::vector<double> d = distances(r.alignment, p);
-        strays = with_lone_spikes(d, std::move(strays), limit, reach, held);
+        strays = with_lone_spikes(d, std::move(strays), limit, reach, held, start.has_value(), end.has_value());
         best.outliers += strays.size() - r.quality.strays.size();
         worst = followed_max(d, strays);
     }
