@@ -317,33 +317,35 @@ double estimated_noise(const fit::OutlierScan& scan) {
     return scan.tested < 12 ? untested_m : std::clamp(scan.noise_sigma_m, floor_m, ceiling_m);
 }
 
-std::vector<Point2> without_repeats(const std::vector<Point>& in) {
+// Per point, the index among the distinct points of the one it is or
+// repeats (within a micrometre of the last distinct one).
+std::vector<std::size_t> distinct_indices(const std::vector<Point>& in) {
+    std::vector<std::size_t> k(in.size(), 0);
+    for (std::size_t i = 1, last = 0; i < in.size(); ++i) {
+        const bool repeat = std::hypot(in[i].x - in[last].x, in[i].y - in[last].y) <= 1e-6;
+        last = repeat ? last : i;
+        k[i] = k[i - 1] + (repeat ? 0 : 1);
+    }
+    return k;
+}
+
+std::vector<Point2> without_repeats(const std::vector<Point>& in, const std::vector<std::size_t>& distinct) {
     std::vector<Point2> out;
-    for (const auto& p : in) {
-        if (out.empty() || std::hypot(p.x - out.back().x, p.y - out.back().y) > 1e-6) {
-            out.push_back({p.x, p.y});
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        if (i == 0 || distinct[i] != distinct[i - 1]) {
+            out.push_back({in[i].x, in[i].y});
         }
     }
     return out;
 }
 
-// Which of the distinct points (without_repeats) are held: a repeat holds
-// the point it repeats.
-std::vector<char> held_mask(const std::vector<Point>& in, const std::vector<std::size_t>& held, std::size_t distinct) {
-    std::vector<char> is_held(in.size(), 0), mask(distinct, 0);
+// Per distinct point, whether it is held: a repeat holds the point it repeats.
+std::vector<char> held_mask(const std::vector<std::size_t>& distinct, const std::vector<std::size_t>& held,
+                            std::size_t n) {
+    std::vector<char> mask(n, 0);
     for (const std::size_t h : held) {
-        if (h < in.size()) {
-            is_held[h] = 1;
-        }
-    }
-    std::size_t k = 0;
-    for (std::size_t i = 0, last = 0; i < in.size(); ++i) {
-        if (i > 0 && std::hypot(in[i].x - in[last].x, in[i].y - in[last].y) > 1e-6) {
-            last = i;
-            ++k;
-        }
-        if (is_held[i] && k < distinct) {
-            mask[k] = 1;
+        if (h < distinct.size()) {
+            mask[distinct[h]] = 1;
         }
     }
     return mask;
@@ -432,12 +434,13 @@ FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Po
 FitResult fit_alignment(const std::vector<Point>& points, const std::optional<Pose>& start,
                         const std::optional<Pose>& end, const FitOptions& options, const std::vector<IndexedAlignment>& guides,
                         const std::vector<std::size_t>& held) {
-    const std::vector<Point2> mapped = without_repeats(points);
+    const std::vector<std::size_t> distinct = distinct_indices(points);
+    const std::vector<Point2> mapped = without_repeats(points, distinct);
     if (mapped.size() < 2) {
         throw std::invalid_argument("fit_alignment: fewer than two distinct points");
     }
     if (options.method == FitMethod::design_search) {
-        return fit::fit_design(mapped, start, end, options, guides, held_mask(points, held, mapped.size()));
+        return fit::fit_design(mapped, start, end, options, guides, held_mask(distinct, held, mapped.size()));
     }
     // Outlier nodes are left out of the fit; its quality is still measured
     // on every node, so the report shows them.
