@@ -341,7 +341,7 @@ TEST(ChainFit, TheMiddleNodeOfAThreeNodeBranchIsNoLoneSpike) {
 // chord within 40 and 22 m. The design search found no design it could
 // afford through the middle node and left it out, 16 m off a single arc:
 // taken for a stray, the chain kept that arc. In line with its neighbours,
-// the node is the fit's miss, and the chain follows it.
+// the node is the fit's miss, and the chain follows it (spliced).
 TEST(ChainFit, ANodeInLineWithItsNeighboursIsNoStray) {
     const std::vector<geometry::Point> p{{-110.779805, -129.044723},
                                          {-88.959515, -96.461054},
@@ -356,6 +356,9 @@ TEST(ChainFit, ANodeInLineWithItsNeighboursIsNoStray) {
     EXPECT_NE(f.method, geometry::ChainMethod::corners);
     EXPECT_TRUE(geometry::drivable(f.alignment));
     EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 2.0);
+    // The noise reported is the spliced fit's, not the tied fit's misfit.
+    EXPECT_GT(search.quality.noise_sigma_m, 1.0);
+    EXPECT_LT(f.noise_sigma_m, 0.5);
     for (const geometry::EndMiss& m : {geometry::start_miss(f.alignment, start), geometry::end_miss(f.alignment, end)}) {
         EXPECT_LT(m.gap_m, 1e-4);
         EXPECT_LT(m.heading_rad, 1e-6);
