@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numbers>
 
@@ -151,6 +152,22 @@ double followed_max(const std::vector<double>& d, const std::vector<std::size_t>
         }
     }
     return worst;
+}
+
+// A chain fit's strays, less those in line with their neighbours
+// (out_of_line), and the furthest node it follows.
+struct Judged {
+    std::vector<std::size_t> strays;
+    double worst = 0.0;
+};
+Judged judge(const FitResult& r, const std::vector<Point>& p, double reach) {
+    if (r.quality.strays.empty()) {
+        return {{}, r.quality.followed_max_m};
+    }
+    const std::vector<double> d = distances(r.alignment, p);
+    Judged j{out_of_line(p, d, r.quality.strays, reach), 0.0};
+    j.worst = followed_max(d, j.strays);
+    return j;
 }
 
 // Whether `candidate` may replace `kept`: no tighter than a track turns
@@ -335,22 +352,22 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
                           const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides,
                           const std::vector<std::size_t>& held) {
     const FitResult r = fit_alignment(p, start, end, o, guides, held);
-    double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.followed_max_m;
-    ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m, r.quality.outliers};
     const double reach = noise_reach(p.size(), r.quality);
     const double limit = fallback_deviation_m + reach;
-    std::vector<std::size_t> strays = r.quality.strays;
-    if (!strays.empty() && std::isfinite(worst)) {
-        const std::vector<double> d = distances(r.alignment, p);
-        strays = out_of_line(p, d, strays, reach);
-        worst = followed_max(d, strays);
-    }
-    if (worst > limit && std::isfinite(worst)) {
+    const bool loops = loops_back(r.alignment, p);
+    Judged j = loops ? Judged{r.quality.strays, std::numeric_limits<double>::infinity()} : judge(r, p, reach);
+    double worst = j.worst;
+    std::vector<std::size_t> strays = std::move(j.strays);
+    if (worst > limit && !loops) {
         const std::vector<double> d = distances(r.alignment, p);
         strays = with_lone_spikes(p, d, std::move(strays), limit, reach, held, start.has_value(), end.has_value());
-        best.outliers += strays.size() - r.quality.strays.size();
         worst = followed_max(d, strays);
     }
+    // The fit's left-out nodes, less the strays judged in line, plus the spikes.
+    const auto count = [](std::size_t n) { return static_cast<std::ptrdiff_t>(n); };
+    const std::ptrdiff_t outliers = count(r.quality.outliers) + count(strays.size()) - count(r.quality.strays.size());
+    ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m,
+                  static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, outliers))};
     if ((start || end) && worst > retry_deviation_m + reach) {
         SplicedFit s = spliced_fit(p, start, end, o, guides, limit, worst);
         if (s.worst_all < worst && explains_the_miss(s.worst_all, worst, reach, limit, r.quality) &&
