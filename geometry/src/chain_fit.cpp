@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <limits>
 #include <numbers>
 
@@ -76,22 +75,6 @@ bool explains_the_miss(double spliced_worst, double tied_worst, double reach, do
            spliced_worst < tied_worst - sigma;
 }
 
-// Whether node b, `off` from the fit, lies in line with nodes a and c: the
-// chord between them passes it within the noise's reach (or a quarter of
-// `off`: over gaps of hundreds of metres a straight sags a metre or so), and
-// nearer than the fit does by more than the noise's reach. Then the miss is the fit's, not the
-// node's: no spike, no stray (Cologne way 114158221: three nodes in line
-// over 370 m between two ties, the middle one left out 16 m off a single
-// arc). An outlier 9-10 m off at 2 m of noise stands as far off its
-// neighbours' chord; one on a sparse curve can lie near it only by chance
-// (sparse truth seed 1422 at 0.1 m: 6.7 m off, 273 m from a neighbour).
-bool in_line(const Point& a, const Point& b, const Point& c, double off, double reach) {
-    const double dx = c.x - a.x, dy = c.y - a.y, len = std::hypot(dx, dy);
-    const double chord =
-        len > 0.0 ? std::abs(dx * (b.y - a.y) - dy * (b.x - a.x)) / len : std::hypot(b.x - a.x, b.y - a.y);
-    return chord <= std::max(reach, 0.25 * off) && chord + reach < off;
-}
-
 // Nodes the fit passes beyond `limit` whose neighbours both lie within the
 // noise's reach of it: a lone spike no railway follows, an outlier inside
 // the robust weights' cut (9-10 m off at 2 m of noise), left out as the
@@ -103,44 +86,19 @@ bool in_line(const Point& a, const Point& b, const Point& c, double off, double 
 // own strays (design_pass.hpp): a free end node is always followed, and a
 // Cologne yard track of three nodes, tied at its switch, had its middle
 // node taken for a spike 17 m off a design that bowed between its ends.
-// A node in line with its neighbours is judged (in_line).
 // d: each node's distance from the fit.
-std::vector<std::size_t> with_lone_spikes(const std::vector<Point>& p, const std::vector<double>& d,
-                                          std::vector<std::size_t> strays, double limit, double reach,
-                                          const std::vector<std::size_t>& held, bool tied_start, bool tied_end) {
+std::vector<std::size_t> with_lone_spikes(const std::vector<double>& d, std::vector<std::size_t> strays, double limit,
+                                          double reach, const std::vector<std::size_t>& held, bool tied_start,
+                                          bool tied_end) {
     const std::size_t first = tied_start ? 1 : 2, last_after = tied_end ? 1 : 2;
     for (std::size_t i = first; i + last_after < d.size(); ++i) {
-        if (d[i] > limit && d[i - 1] <= reach && d[i + 1] <= reach && !in_line(p[i - 1], p[i], p[i + 1], d[i], reach) &&
-            !std::binary_search(held.begin(), held.end(), i)) {
+        if (d[i] > limit && d[i - 1] <= reach && d[i + 1] <= reach && !std::binary_search(held.begin(), held.end(), i)) {
             strays.push_back(i);
         }
     }
     std::sort(strays.begin(), strays.end());
     strays.erase(std::unique(strays.begin(), strays.end()), strays.end());
     return strays;
-}
-
-// The fit's strays less those in line with the followed nodes either side
-// (in_line): the design search leaves such a node out where no design it
-// can afford passes it, and the chain's splice or patch is what follows it.
-// d: each node's distance from the fit.
-std::vector<std::size_t> out_of_line(const std::vector<Point>& p, const std::vector<double>& d,
-                                     const std::vector<std::size_t>& strays, double reach) {
-    const auto stray = [&](std::size_t j) { return std::binary_search(strays.begin(), strays.end(), j); };
-    std::vector<std::size_t> out;
-    for (const std::size_t i : strays) {
-        std::size_t a = i, b = i;
-        while (a > 0 && stray(a)) {
-            --a;
-        }
-        while (b + 1 < p.size() && stray(b)) {
-            ++b;
-        }
-        if (stray(a) || stray(b) || !in_line(p[a], p[i], p[b], d[i], reach)) {
-            out.push_back(i);
-        }
-    }
-    return out;
 }
 
 // The furthest of the distances d of the nodes that are not strays (ascending).
@@ -152,22 +110,6 @@ double followed_max(const std::vector<double>& d, const std::vector<std::size_t>
         }
     }
     return worst;
-}
-
-// A chain fit's strays, less those in line with their neighbours
-// (out_of_line), and the furthest node it follows.
-struct Judged {
-    std::vector<std::size_t> strays;
-    double worst = 0.0;
-};
-Judged judge(const FitResult& r, const std::vector<Point>& p, double reach) {
-    if (r.quality.strays.empty()) {
-        return {{}, r.quality.followed_max_m};
-    }
-    const std::vector<double> d = distances(r.alignment, p);
-    Judged j{out_of_line(p, d, r.quality.strays, reach), 0.0};
-    j.worst = followed_max(d, j.strays);
-    return j;
 }
 
 // Whether `candidate` may replace `kept`: no tighter than a track turns
@@ -245,13 +187,14 @@ void measure(SplicedFit& s, const std::vector<Point>& p) {
 // are tried first (within the chain's limit); where the chain then strays
 // further than the tied fit did (`tied_worst`), corners, which follow
 // every node within 0.25 m. Its noise and outliers are the free fit's: the
-// tied fit's noise estimate is its misfit where the ties bent it (Cologne
-// way 114158221: 1.23 m, the tied fit 16 m off a node), and the nodes'
-// distances, read in units of it, looked closer than they are.
+// tied fit's noise estimate is its misfit where the ties bent it (a Cologne
+// yard track of five nodes tied at both switches: 1.23 m against 0.27 m),
+// and the nodes' distances, read in units of it, looked closer than they
+// are. The free fit holds the chain's switch nodes as the tied one does.
 SplicedFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                       const FitOptions& o, const std::vector<IndexedAlignment>& guides, double limit,
-                       double tied_worst) {
-    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
+                       const FitOptions& o, const std::vector<IndexedAlignment>& guides,
+                       const std::vector<std::size_t>& held, double limit, double tied_worst) {
+    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides, held);
     SplicedFit s{spliced(r.alignment, p, start, end, limit), std::move(r.quality.strays)};
     measure(s, p);
     if (s.worst_all >= tied_worst) {
@@ -352,24 +295,19 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
                           const std::optional<Pose>& end, const FitOptions& o, const std::vector<IndexedAlignment>& guides,
                           const std::vector<std::size_t>& held) {
     const FitResult r = fit_alignment(p, start, end, o, guides, held);
+    double worst = loops_back(r.alignment, p) ? std::numeric_limits<double>::infinity() : r.quality.followed_max_m;
+    ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m, r.quality.outliers};
+    std::vector<std::size_t> strays = r.quality.strays;
     const double reach = noise_reach(p.size(), r.quality);
     const double limit = fallback_deviation_m + reach;
-    const bool loops = loops_back(r.alignment, p);
-    Judged j = loops ? Judged{r.quality.strays, std::numeric_limits<double>::infinity()} : judge(r, p, reach);
-    double worst = j.worst;
-    std::vector<std::size_t> strays = std::move(j.strays);
-    if (worst > limit && !loops) {
+    if (worst > limit && std::isfinite(worst)) {
         const std::vector<double> d = distances(r.alignment, p);
-        strays = with_lone_spikes(p, d, std::move(strays), limit, reach, held, start.has_value(), end.has_value());
+        strays = with_lone_spikes(d, std::move(strays), limit, reach, held, start.has_value(), end.has_value());
+        best.outliers += strays.size() - r.quality.strays.size();
         worst = followed_max(d, strays);
     }
-    // The fit's left-out nodes, less the strays judged in line, plus the spikes.
-    const auto count = [](std::size_t n) { return static_cast<std::ptrdiff_t>(n); };
-    const std::ptrdiff_t outliers = count(r.quality.outliers) + count(strays.size()) - count(r.quality.strays.size());
-    ChainFit best{r.alignment, ChainMethod::railway, 0, 0, r.quality.noise_sigma_m,
-                  static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, outliers))};
     if ((start || end) && worst > retry_deviation_m + reach) {
-        SplicedFit s = spliced_fit(p, start, end, o, guides, limit, worst);
+        SplicedFit s = spliced_fit(p, start, end, o, guides, held, limit, worst);
         if (s.worst_all < worst && explains_the_miss(s.worst_all, worst, reach, limit, r.quality) &&
             may_replace(best.alignment, s.fit.alignment)) {
             best = std::move(s.fit);
