@@ -186,23 +186,17 @@ void measure(SplicedFit& s, const std::vector<Point>& p) {
 // The fit with free ends, its tied stretches spliced on. Splices of design
 // are tried first (within the chain's limit); where the chain then strays
 // further than the tied fit did (`tied_worst`), corners, which follow
-// every node within 0.25 m. Its noise and outliers are the free fit's: the
-// tied fit's noise estimate is its misfit where the ties bent it (a Cologne
-// yard track of five nodes tied at both switches: 1.23 m against 0.27 m),
-// and the nodes' distances, read in units of it, looked closer than they
-// are. The free fit holds the chain's switch nodes as the tied one does.
+// every node within 0.25 m.
 SplicedFit spliced_fit(const std::vector<Point>& p, const std::optional<Pose>& start, const std::optional<Pose>& end,
-                       const FitOptions& o, const std::vector<IndexedAlignment>& guides,
-                       const std::vector<std::size_t>& held, double limit, double tied_worst) {
-    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides, held);
+                       const FitOptions& o, const std::vector<IndexedAlignment>& guides, double limit,
+                       double tied_worst) {
+    FitResult r = fit_alignment(p, std::nullopt, std::nullopt, o, guides);
     SplicedFit s{spliced(r.alignment, p, start, end, limit), std::move(r.quality.strays)};
     measure(s, p);
     if (s.worst_all >= tied_worst) {
         s.fit = spliced(r.alignment, p, start, end, 0.0);
         measure(s, p);
     }
-    s.fit.noise_sigma_m = r.quality.noise_sigma_m;
-    s.fit.outliers = r.quality.outliers;
     return s;
 }
 
@@ -307,7 +301,9 @@ ChainFit fit_chain_points(const std::vector<Point>& p, const std::optional<Pose>
         worst = followed_max(d, strays);
     }
     if ((start || end) && worst > retry_deviation_m + reach) {
-        SplicedFit s = spliced_fit(p, start, end, o, guides, held, limit, worst);
+        SplicedFit s = spliced_fit(p, start, end, o, guides, limit, worst);
+        s.fit.noise_sigma_m = best.noise_sigma_m;
+        s.fit.outliers = best.outliers;
         if (s.worst_all < worst && explains_the_miss(s.worst_all, worst, reach, limit, r.quality) &&
             may_replace(best.alignment, s.fit.alignment)) {
             best = std::move(s.fit);
