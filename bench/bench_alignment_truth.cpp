@@ -121,8 +121,10 @@ void print_bounds(const std::vector<double>& bound, const std::vector<double>& r
 void add_worst(int seed, const truth::TruthRoute& r, const truth::TruthScore& s, double noise_m,
                std::vector<Worst>& worst_routes, std::vector<Worst>& worst_arcs) {
     char line[256];
-    std::snprintf(line, sizeof line, "seed %d: max %.2f m at s %.0f, p95 %.2f m, %zu / %zu elements, noise %.2f m", seed,
-                  s.deviation_max_m, s.deviation_max_at_m, s.deviation_p95_m, s.fit_elements, s.design_elements, noise_m);
+    std::snprintf(line, sizeof line,
+                  "seed %d: max %.2f m at s %.0f of %.0f, p95 %.2f m, %zu / %zu elements, noise %.2f m", seed,
+                  s.deviation_max_m, s.deviation_max_at_m, geometry::length(r.design), s.deviation_p95_m,
+                  s.fit_elements, s.design_elements, noise_m);
     worst_routes.push_back({s.deviation_max_m, line});
     for (std::size_t a = 0; a < r.arcs.size() && a < s.radius_errors.size(); ++a) {
         std::snprintf(line, sizeof line, "seed %d arc at s %.0f: R %.0f m, %.0f m long, error %.1f %%", seed,

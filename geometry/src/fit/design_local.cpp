@@ -69,6 +69,14 @@ double element_prior(const FrameElement& e, bool first, bool last, const DesignD
     return c;
 }
 
+double priced(const FrameDesign& d, const DesignDpOptions& o) {
+    double c = d.cost;
+    for (std::size_t j = 0; j < d.elements.size(); ++j) {
+        c += element_prior(d.elements[j], j == 0, j + 1 == d.elements.size(), o);
+    }
+    return c;
+}
+
 StructureCosts::StructureCosts(const std::vector<FrameNode>& nodes, const DesignDpOptions& o) : n_(nodes), o_(o) {
     for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
         mirrored_.push_back({-it->t, it->z, it->w});

@@ -54,6 +54,10 @@ FrameDesign solved(const std::vector<FrameElement>& st, const ForwardPass& pass)
 // it hides, and no curvature beyond 1/15 m. first, last: the element begins
 // or ends the chain.
 double element_prior(const FrameElement& e, bool first, bool last, const DesignDpOptions& o);
+// A whole design's cost with its elements' priors, as the refinement prices
+// it: what designs are chosen between by (search rounds, windows searched
+// again, the last pass's design). FrameDesign::cost leaves the priors out.
+double priced(const FrameDesign& d, const DesignDpOptions& o);
 
 class StructureCosts {
 public:

@@ -6,6 +6,7 @@
 // that differ there, and the refine's single moves cannot reach one several
 // elements deep.
 #include "design_dp.hpp"
+#include "design_local.hpp"
 
 #include "design_rules.hpp"
 
@@ -115,12 +116,12 @@ FrameDesign research_span(const std::vector<FrameNode>& nodes, const FrameDesign
 }
 
 FrameDesign research_windows(const std::vector<FrameNode>& nodes, FrameDesign design, const DesignDpOptions& o) {
-    double now = design.cost + stray_cost(design, nodes);
+    double now = priced(design, o) + stray_cost(design, nodes);
     for (std::size_t j = 0; j + 1 < design.elements.size(); j += window_elements / 2) {
         const auto& el = design.elements;
         const std::size_t k = window_end(el, j);
         FrameDesign d = research_span(nodes, design, o, el[j].s0, el[k - 1].s1);
-        const double cost = d.cost + stray_cost(d, nodes);
+        const double cost = priced(d, o) + stray_cost(d, nodes);
         if (cost < now - 1e-6 * (1.0 + std::abs(now))) {
             design = std::move(d);
             now = cost;
