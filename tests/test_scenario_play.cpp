@@ -238,3 +238,25 @@ TEST(ScenarioPlay, ATargetPlacedOnTheMapIsJudgedWhereTheActorEnds) {
     m["actors"][0]["target"]["y"] = 4.0;
     EXPECT_FALSE(passed(analyse(m, read(rows), {}, {}), "Car reaches its target"));
 }
+
+// The player may report the road a crossing road ends on once the car is at
+// its target there (within its 1.5 m); anywhere else that is leaving its
+// road's lane.
+TEST(ScenarioPlay, ARoadUserAtItsTargetMayStandOnTheNextRoad) {
+    auto rows = crossing_run();
+    for (auto& r : rows) {
+        if (r.name == "Car" && r.y > -1.0) {
+            r.road = "2382";
+            r.s = 0.1;
+        }
+    }
+    json m = crossing_manifest();
+    m["actors"][0]["target"]["x"] = 600.0;
+    m["actors"][0]["target"]["y"] = 0.0;
+    EXPECT_TRUE(passed(analyse(m, read(rows), {}, {}), "Car stays on its road's lane"));
+    m["actors"][0]["target"]["y"] = 5.0;
+    EXPECT_FALSE(passed(analyse(m, read(rows), {}, {}), "Car stays on its road's lane"));
+    m["actors"][0]["target"].erase("x");
+    m["actors"][0]["target"].erase("y");
+    EXPECT_FALSE(passed(analyse(m, read(rows), {}, {}), "Car stays on its road's lane"));
+}
