@@ -6,7 +6,8 @@
 // structure is solved and refined in the same frame. Frame, noise estimate
 // and robust weights play no part: what is left is the search. A search
 // that ends costlier than the true structure did not find the optimum of
-// its own objective; one that ends cheaper found a design the data prefer.
+// its own objective (its cost with the design priors, priced); one that
+// ends cheaper found a design the data prefer.
 // Both designs are also taken to the map and scored against the true
 // centreline: where the true structure, refined, still lies beyond issue
 // 37's limit, no search on this objective gets within it there.
@@ -15,6 +16,7 @@
 // sigma 0.1 0.3 1.0, OSM-like spacing, no outliers).
 #include "fit/design_dp.hpp"
 #include "fit/design_fit.hpp"
+#include "fit/design_local.hpp"
 #include "fit/reference_line.hpp"
 
 #include "railodd/truth/alignment_truth.hpp"
@@ -110,7 +112,7 @@ Gap route_gap(int seed, double sigma, truth::Spacing spacing) {
     const FrameDesign found = search_design(nodes, o, search_design(nodes, o, {}).elements);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const FrameDesign best = refine_structure(nodes, true_structure(r.design, o), o);
-    return {found.cost - best.cost, o.parameter_penalty, seconds,
+    return {priced(found, o) - priced(best, o), o.parameter_penalty, seconds,
             truth::score(r, to_alignment(ref, found)).deviation_max_m,
             truth::score(r, to_alignment(ref, best)).deviation_max_m, found.elements.size(), best.elements.size()};
 }
