@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace railodd::scenario::play {
@@ -178,20 +179,30 @@ void start_checks(Run& r, const json& actor, const std::vector<Sample>& v, const
     }
 }
 
+// How near an actor must come to its target's place on the map (target x,
+// y, where play placed it) to be there.
+constexpr double target_reach_m = 1.5;
+
+// The distance from a sample to its actor's target's place on the map;
+// none where the target has no place (road and s only).
+std::optional<double> from_place(const Sample& s, const json& target) {
+    if (!target.contains("x") || !target.contains("y")) {
+        return std::nullopt;
+    }
+    return std::hypot(s.x - target.at("x").get<double>(), s.y - target.at("y").get<double>());
+}
+
 // A road user moving to the crossing stays on its road's lane all the way.
-// Within reach of its target's place on the map (target_check's 1.5 m) the
-// player may report the road its own road ends on (a crossing road cut
-// short at the track: Munich, a car 0.1 m onto the next road at its target).
+// At its target's place the player may report the road its own road ends
+// on (a crossing road cut short at the track: Munich, a car 0.1 m onto the
+// next road at its target), as target_check allows.
 void road_user_checks(Run& r, const json& actor, const std::vector<Sample>& v) {
     const std::string name = actor.at("name"), road = actor.at("start").at("road_id");
     const json& target = actor.at("target");
-    const bool placed = target.contains("x") && target.contains("y");
-    const auto at_target = [&](const Sample& s) {
-        return placed && std::hypot(s.x - target.at("x").get<double>(), s.y - target.at("y").get<double>()) <= 1.5;
-    };
     std::string left;
     for (const Sample& s : v) {
-        const bool off = s.road_id != road ? !at_target(s) : std::abs(s.lane_offset) > 0.5;
+        const auto miss = from_place(s, target);
+        const bool off = s.road_id != road ? !(miss && *miss <= target_reach_m) : std::abs(s.lane_offset) > 0.5;
         if (off && left.empty()) {
             left = "road " + s.road_id + " offset " + fmt(s.lane_offset) + " at t = " + fmt(s.t);
         }
@@ -207,10 +218,10 @@ void road_user_checks(Run& r, const json& actor, const std::vector<Sample>& v) {
 void target_check(Run& r, const json& actor, const std::vector<Sample>& v, const Path& path) {
     const json& target = actor.at("target");
     const Sample& last = v.back();
-    const bool placed = target.contains("x") && target.contains("y");
-    const double miss = placed ? std::hypot(last.x - target.at("x").get<double>(), last.y - target.at("y").get<double>())
-                               : std::abs(last.s - target.at("s").get<double>());
-    bool there = miss <= 1.5 && (placed || last.road_id == target.at("road_id").get<std::string>());
+    const std::optional<double> off_place = from_place(last, target);
+    const bool placed = off_place.has_value();
+    const double miss = placed ? *off_place : std::abs(last.s - target.at("s").get<double>());
+    bool there = miss <= target_reach_m && (placed || last.road_id == target.at("road_id").get<std::string>());
     if (!there && actor.value("move_to", "") == "on_track" && !path.empty()) {
         const auto foot = path.project(last.x, last.y);
         there = foot.chainage > 0.0 && foot.chainage < path.length() &&
