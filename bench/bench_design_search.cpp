@@ -12,8 +12,9 @@
 // centreline: where the true structure, refined, still lies beyond issue
 // 37's limit, no search on this objective gets within it there.
 // Run: build/bench/bench_design_search [ROUTES] [SIGMA ...] [--spacing
-// osm|dense|sparse] [--first SEED] (defaults: 100 routes from seed 1000,
-// sigma 0.1 0.3 1.0, OSM-like spacing, no outliers).
+// osm|dense|sparse] [--first SEED] [--print] (defaults: 100 routes from
+// seed 1000, sigma 0.1 0.3 1.0, OSM-like spacing, no outliers; --print
+// writes both structures of every route, element by element, with priors).
 #include "fit/design_dp.hpp"
 #include "fit/design_fit.hpp"
 #include "fit/design_local.hpp"
@@ -40,6 +41,7 @@ struct Options {
     int first = 1000;
     std::vector<double> sigmas;
     truth::Spacing spacing = truth::Spacing::osm;
+    bool print = false; // each route's two structures, element by element
 };
 
 Options parse(int argc, char** argv) {
@@ -49,6 +51,8 @@ Options parse(int argc, char** argv) {
         if (a == "--spacing" && i + 1 < argc) {
             const std::string s = argv[++i];
             o.spacing = s == "dense" ? truth::Spacing::dense : s == "sparse" ? truth::Spacing::sparse : truth::Spacing::osm;
+        } else if (a == "--print") {
+            o.print = true;
         } else if (a == "--first" && i + 1 < argc) {
             o.first = std::atoi(argv[++i]);
         } else if (i == 1) {
@@ -87,7 +91,16 @@ struct Gap {
     std::size_t found_elements = 0, true_elements = 0;
 };
 
-Gap route_gap(int seed, double sigma, truth::Spacing spacing) {
+void print_design(const char* name, const FrameDesign& d, const DesignDpOptions& o) {
+    std::printf("%s: priced %.2f, without priors %.2f\n", name, priced(d, o), d.cost);
+    for (std::size_t j = 0; j < d.elements.size(); ++j) {
+        const FrameElement& e = d.elements[j];
+        std::printf("  %c %8.1f %8.1f  k %9.6f %9.6f  prior %.2f\n", "LTA"[static_cast<int>(e.kind)], e.s0, e.s1, e.k0, e.k1,
+                    element_prior(e, j == 0, j + 1 == d.elements.size(), o));
+    }
+}
+
+Gap route_gap(int seed, double sigma, truth::Spacing spacing, bool print) {
     truth::TruthOptions t;
     t.sigma_m = sigma;
     t.outlier_fraction = 0.0;
@@ -112,6 +125,11 @@ Gap route_gap(int seed, double sigma, truth::Spacing spacing) {
     const FrameDesign found = search_design(nodes, o, search_design(nodes, o, {}).elements);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const FrameDesign best = refine_structure(nodes, true_structure(r.design, o), o);
+    if (print) {
+        std::printf("seed %d\n", seed);
+        print_design("search", found, o);
+        print_design("true structure", best, o);
+    }
     return {priced(found, o) - priced(best, o), o.parameter_penalty, seconds,
             truth::score(r, to_alignment(ref, found)).deviation_max_m,
             truth::score(r, to_alignment(ref, best)).deviation_max_m, found.elements.size(), best.elements.size()};
@@ -132,7 +150,7 @@ int main(int argc, char** argv) {
         double seconds = 0.0;
         const double limit = truth::deviation_limit(sigma, o.spacing);
         for (int seed = o.first; seed < o.first + o.routes; ++seed) {
-            const Gap g = route_gap(seed, sigma, o.spacing);
+            const Gap g = route_gap(seed, sigma, o.spacing, o.print);
             gaps.push_back(g.cost);
             worse += g.cost > g.penalty ? 1 : 0;
             better += g.cost < -g.penalty ? 1 : 0;

@@ -2,8 +2,9 @@
 // (design statistics, node noise, links) and the fit's time, for the
 // windowed fit and the design search (FitMethod, fit_alignment.hpp) on the
 // same track graph. Run: build/bench/bench_fit_extract EXTRACT.osm.pbf
-// [--method windowed|design|both] [--threads N] [--shift-mm D] (default
-// both, 2 threads, no shift). Prints one JSON object per method.
+// [--method windowed|design|both] [--threads N] [--shift-mm D] [--list-off]
+// (default both, 2 threads, no shift). Prints one JSON object per method;
+// --list-off writes each switch node off its fit to stderr.
 //
 // --shift-mm moves every track node and feature D mm east and 0.7 D mm north
 // in the local frame before the fit. A fit is the same up to rounding
@@ -51,19 +52,30 @@ void shift(ingest::IngestResult& r, double dx, double dy) {
 // than max(1 m, 4 sigma-hat) from their edge's fit, counted once per edge
 // end: where the tracks meet, the mapping is surest, and a branch tied to
 // a fit that misses its switch starts off its mapped track.
-std::size_t switch_nodes_off(const geometry::TrackGraph& graph, const geometry::FittedNetwork& net) {
+// With list, each is written to stderr: edge, switch node id, first way id,
+// distance and the edge's sigma-hat.
+std::size_t switch_nodes_off(const geometry::TrackGraph& graph, const geometry::FittedNetwork& net, bool list) {
     std::size_t off = 0;
     for (const geometry::FittedEdge& e : net.edges) {
         const geometry::GraphEdge& ge = graph.edges[e.edge];
         std::vector<geometry::Point> ends;
+        std::vector<std::int64_t> ids;
         for (const bool at_end : {false, true}) {
             if (graph.vertices[at_end ? ge.to : ge.from].kind == geometry::VertexKind::switch_) {
                 const auto& n = at_end ? ge.nodes.back() : ge.nodes.front();
                 ends.push_back({n.xy.x, n.xy.y});
+                ids.push_back(n.id);
             }
         }
-        for (const double d : geometry::distances(e.alignment, ends)) {
-            off += d > std::max(1.0, 4.0 * e.quality.noise_sigma_m) ? 1 : 0;
+        const std::vector<double> d = geometry::distances(e.alignment, ends);
+        for (std::size_t k = 0; k < d.size(); ++k) {
+            const bool is_off = d[k] > std::max(1.0, 4.0 * e.quality.noise_sigma_m);
+            off += is_off ? 1 : 0;
+            if (is_off && list) {
+                std::fprintf(stderr, "edge %zu node %lld way %lld off %.2f m sigma %.2f m\n", e.edge,
+                             static_cast<long long>(ids[k]), static_cast<long long>(ge.ways.front().way_id), d[k],
+                             e.quality.noise_sigma_m);
+            }
         }
     }
     return off;
@@ -74,20 +86,30 @@ std::size_t switch_nodes_off(const geometry::TrackGraph& graph, const geometry::
 int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr,
-                     "usage: bench_fit_extract EXTRACT [--method windowed|design|both] [--threads N] [--shift-mm D]\n");
+                     "usage: bench_fit_extract EXTRACT [--method windowed|design|both] [--threads N] [--shift-mm D] "
+                     "[--list-off]\n");
         return 2;
     }
     std::string method = "both";
     unsigned threads = 2;
     double shift_m = 0.0;
-    for (int i = 2; i + 1 < argc; i += 2) {
+    bool list_off = false;
+    for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
+        if (a == "--list-off") {
+            list_off = true;
+            continue;
+        }
+        if (i + 1 >= argc) {
+            break;
+        }
+        ++i;
         if (a == "--method") {
-            method = argv[i + 1];
+            method = argv[i];
         } else if (a == "--threads") {
-            threads = static_cast<unsigned>(std::stoul(argv[i + 1]));
+            threads = static_cast<unsigned>(std::stoul(argv[i]));
         } else if (a == "--shift-mm") {
-            shift_m = std::stod(argv[i + 1]) / 1000.0;
+            shift_m = std::stod(argv[i]) / 1000.0;
         }
     }
     ingest::IngestOptions io;
@@ -116,7 +138,7 @@ int main(int argc, char** argv) {
         out["method"] = name;
         out["fit_seconds"] = seconds;
         out["summary"] = geometry::report_section(graph, net)["summary"];
-        out["switch_nodes_off"] = switch_nodes_off(graph, net);
+        out["switch_nodes_off"] = switch_nodes_off(graph, net, list_off);
         std::cout << out.dump() << "\n";
     }
     return 0;
