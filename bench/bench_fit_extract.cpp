@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace railodd;
@@ -52,19 +53,19 @@ void shift(ingest::IngestResult& r, double dx, double dy) {
 // than max(1 m, 4 sigma-hat) from their edge's fit, counted once per edge
 // end: where the tracks meet, the mapping is surest, and a branch tied to
 // a fit that misses its switch starts off its mapped track.
-// With list, each is written to stderr: edge, switch node id, first way id,
-// distance and the edge's sigma-hat.
+// With list, each is written to stderr: edge, switch node id, the way at
+// that end, distance and the edge's sigma-hat.
 std::size_t switch_nodes_off(const geometry::TrackGraph& graph, const geometry::FittedNetwork& net, bool list) {
     std::size_t off = 0;
     for (const geometry::FittedEdge& e : net.edges) {
         const geometry::GraphEdge& ge = graph.edges[e.edge];
         std::vector<geometry::Point> ends;
-        std::vector<std::int64_t> ids;
+        std::vector<std::pair<std::int64_t, std::int64_t>> named; // node id, the way at that end
         for (const bool at_end : {false, true}) {
             if (graph.vertices[at_end ? ge.to : ge.from].kind == geometry::VertexKind::switch_) {
                 const auto& n = at_end ? ge.nodes.back() : ge.nodes.front();
                 ends.push_back({n.xy.x, n.xy.y});
-                ids.push_back(n.id);
+                named.push_back({n.id, (at_end ? ge.ways.back() : ge.ways.front()).way_id});
             }
         }
         const std::vector<double> d = geometry::distances(e.alignment, ends);
@@ -73,7 +74,7 @@ std::size_t switch_nodes_off(const geometry::TrackGraph& graph, const geometry::
             off += is_off ? 1 : 0;
             if (is_off && list) {
                 std::fprintf(stderr, "edge %zu node %lld way %lld off %.2f m sigma %.2f m\n", e.edge,
-                             static_cast<long long>(ids[k]), static_cast<long long>(ge.ways.front().way_id), d[k],
+                             static_cast<long long>(named[k].first), static_cast<long long>(named[k].second), d[k],
                              e.quality.noise_sigma_m);
             }
         }
@@ -98,18 +99,12 @@ int main(int argc, char** argv) {
         const std::string a = argv[i];
         if (a == "--list-off") {
             list_off = true;
-            continue;
-        }
-        if (i + 1 >= argc) {
-            break;
-        }
-        ++i;
-        if (a == "--method") {
-            method = argv[i];
-        } else if (a == "--threads") {
-            threads = static_cast<unsigned>(std::stoul(argv[i]));
-        } else if (a == "--shift-mm") {
-            shift_m = std::stod(argv[i]) / 1000.0;
+        } else if (a == "--method" && i + 1 < argc) {
+            method = argv[++i];
+        } else if (a == "--threads" && i + 1 < argc) {
+            threads = static_cast<unsigned>(std::stoul(argv[++i]));
+        } else if (a == "--shift-mm" && i + 1 < argc) {
+            shift_m = std::stod(argv[++i]) / 1000.0;
         }
     }
     ingest::IngestOptions io;
