@@ -5,7 +5,7 @@
 # tests again (scripts/test_san.sh; RAILODD_SANITIZE=0 skips them), convert's
 # threads under ThreadSanitizer (scripts/test_tsan.sh, build-tsan/;
 # RAILODD_TSAN=0 skips it) and a smoke of every libFuzzer harness
-# (fuzz/run.sh): RAILODD_FUZZ_SECONDS each (default 30; 0 skips it).
+# (fuzz/run.sh): RAILODD_FUZZ_SECONDS each (default 20; 0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -17,6 +17,6 @@ fi
 if [ "${RAILODD_TSAN:-1}" != 0 ]; then
   bash scripts/test_tsan.sh
 fi
-if [ "${RAILODD_FUZZ_SECONDS:-30}" != 0 ]; then
-  bash fuzz/run.sh "${RAILODD_FUZZ_SECONDS:-30}"
+if [ "${RAILODD_FUZZ_SECONDS:-20}" != 0 ]; then
+  bash fuzz/run.sh "${RAILODD_FUZZ_SECONDS:-20}"
 fi
