@@ -16,7 +16,7 @@ namespace {
 
 struct Figures {
     double p95 = 0.0, max = 0.0;
-    double p95_sigmas = 0.0;  // node distances in units of their chain's noise estimate, but on reported chains
+    double p95_sigmas = 0.0;  // node distances in units of their chain's noise estimate, except on reported chains
     std::size_t beyond = 0;   // nodes further than max(1 m, 4 sigma-hat)
     std::size_t reported = 0; // of those, on chains reported beyond their limit (links.beyond_limit_chains)
     std::size_t on_reported = 0; // nodes on those chains
