@@ -2,7 +2,7 @@
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
 // [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing
-// osm|dense|sparse] [--method design|windowed] [--tied] [--chain] (defaults: 300 routes from
+// osm|dense|sparse|very-sparse] [--method design|windowed] [--tied] [--chain] (defaults: 300 routes from
 // seed 1000, sigma 0.1 0.3 1.0, 1 % outliers, OSM-like node spacing
 // (alignment_truth.hpp), the design search (the default fit); --worst lists the
 // N worst routes and arcs; --bound
@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -222,7 +223,12 @@ int main(int argc, char** argv) {
             o.first = std::atoi(argv[++i]);
         } else if (a == "--spacing" && i + 1 < argc) {
             const std::string v = argv[++i];
-            o.spacing = v == "dense" ? truth::Spacing::dense : v == "sparse" ? truth::Spacing::sparse : truth::Spacing::osm;
+            const std::optional<truth::Spacing> named = truth::spacing_named(v);
+            if (!named) {
+                std::fprintf(stderr, "--spacing %s: not a spacing (osm, dense, sparse, very-sparse)\n", v.c_str());
+                std::exit(2);
+            }
+            o.spacing = *named;
         } else if (a == "--method" && i + 1 < argc) {
             o.method = std::string(argv[++i]) == "design" ? geometry::FitMethod::design_search : geometry::FitMethod::windowed;
         } else if (a == "--tied") {

@@ -12,7 +12,7 @@
 // centreline: where the true structure, refined, still lies beyond issue
 // 37's limit, no search on this objective gets within it there.
 // Run: build/bench/bench_design_search [ROUTES] [SIGMA ...] [--spacing
-// osm|dense|sparse] [--first SEED] [--print] (defaults: 100 routes from
+// osm|dense|sparse|very-sparse] [--first SEED] [--print] (defaults: 100 routes from
 // seed 1000, sigma 0.1 0.3 1.0, OSM-like spacing, no outliers; --print
 // writes both structures of every route, element by element, with priors).
 #include "fit/design_dp.hpp"
@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,7 +51,12 @@ Options parse(int argc, char** argv) {
         const std::string a = argv[i];
         if (a == "--spacing" && i + 1 < argc) {
             const std::string s = argv[++i];
-            o.spacing = s == "dense" ? truth::Spacing::dense : s == "sparse" ? truth::Spacing::sparse : truth::Spacing::osm;
+            const std::optional<truth::Spacing> named = truth::spacing_named(s);
+            if (!named) {
+                std::fprintf(stderr, "--spacing %s: not a spacing (osm, dense, sparse, very-sparse)\n", s.c_str());
+                std::exit(2);
+            }
+            o.spacing = *named;
         } else if (a == "--print") {
             o.print = true;
         } else if (a == "--first" && i + 1 < argc) {

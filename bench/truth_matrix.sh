@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # The truth bench over every regime issue 37 names: node spacing (OSM-like,
 # dense, sparse) x sigma, for one fit method, as one table row per regime.
-# Usage: [OUTLIERS=F] [CHAIN=1] [FIRST=SEED] bench/truth_matrix.sh [design|windowed] [ROUTES] [SIGMAS...]
+# Usage: [OUTLIERS=F] [CHAIN=1] [FIRST=SEED] [SPACINGS=...] bench/truth_matrix.sh [design|windowed] [ROUTES] [SIGMAS...]
 # (defaults: design, 300 routes, sigma 0.1 0.3 1.0 2.0; OUTLIERS, the
 # share of outlier nodes, 0.01; CHAIN=1: each route tied at both ends and
 # built as the network's fit builds a chain, with a column of how:
 # railway / spliced / patched / corners; FIRST, the first route's seed,
 # 1000: two builds level over many routes can differ by ten routes over
-# the limit on one draw of 300, so compare them on more than one).
+# the limit on one draw of 300, so compare them on more than one);
+# SPACINGS, the regimes, "osm dense sparse" (very-sparse besides: a
+# regime issue 37 names no target for).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 method=${1:-design}
@@ -19,7 +21,7 @@ chain=()
 if [ "${CHAIN:-0}" = 1 ]; then chain=(--chain --tied); fi
 echo "| spacing | sigma | routes max > 1 m | over issue 37 limit | route max p50 / p95 / max (m) | route p95 median | radius error p50 / p95 | elements / design p95 / max | spurious sign changes (routes) | noise / sigma p5-p95 | fit s |${chain:+ chains r / s / p / c |}"
 echo "|---|---|---|---|---|---|---|---|---|---|---|${chain:+---|}"
-for spacing in osm dense sparse; do
+for spacing in ${SPACINGS:-osm dense sparse}; do
   for s in $sigmas; do
     "$bin" "$routes" "$s" --spacing "$spacing" --method "$method" --outliers "${OUTLIERS:-0.01}" --first "${FIRST:-1000}" "${chain[@]}" | python3 -c '
 import re, sys

@@ -9,14 +9,24 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace railodd::truth {
 
 // How far apart the mapped nodes are: as OSM mappers draw track (50-250 m
 // on straights, 5-40 m in curves), densely (5-15 m everywhere, GPS-traced
-// ways) or sparsely (100-400 m on straights, 25-60 m in curves).
-enum class Spacing { osm, dense, sparse };
+// ways), sparsely (100-400 m on straights, 25-60 m in curves) or very
+// sparsely (250-1,250 m on straights, 25-200 m in curves: a line mapped
+// from a few points; issue 37 names no target for it, the sparse limit is
+// applied). On straights every draw puts a node 2-15 m past each curve's
+// start.
+enum class Spacing { osm, dense, sparse, very_sparse };
+
+// The spacing of a command line's name (osm, dense, sparse, very-sparse);
+// nothing for any other name.
+std::optional<Spacing> spacing_named(const std::string& name);
 
 struct TruthOptions {
     double sigma_m = 0.3;            // lateral scatter of the mapped nodes
@@ -58,7 +68,8 @@ std::size_t sign_changes(const geometry::Alignment& a);
 TruthScore score(const TruthRoute& route, const geometry::Alignment& fit);
 
 // Issue 37's limit on a route's largest deviation from the true centreline:
-// 1 m up to 0.3 m of noise (1.5 m on sparse nodes), 2.5 m at 1 m, 5 m at 2 m.
+// 1 m up to 0.3 m of noise (1.5 m on sparse and very sparse nodes), 2.5 m
+// at 1 m, 5 m at 2 m.
 double deviation_limit(double sigma, Spacing spacing);
 
 } // namespace railodd::truth
