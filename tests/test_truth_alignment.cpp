@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 using namespace railodd;
 
@@ -81,6 +83,42 @@ TEST(TruthAlignment, NodesAreDrawnAsMappersDrawThem) {
         EXPECT_GT(outliers, 0u) << "seed " << seed;
         EXPECT_LT(static_cast<double>(outliers), 0.15 * static_cast<double>(r.nodes.size()));
     }
+}
+
+// Each spacing's largest gap between nodes along the design: within its
+// straights' draw (plus the 2-15 m past a curve's start and a node's
+// scatter), and the sparser regimes' gaps wider than OSM-like ones.
+TEST(TruthAlignment, EachSpacingDrawsItsOwnGaps) {
+    const std::pair<truth::Spacing, double> regimes[] = {{truth::Spacing::dense, 15.0},
+                                                         {truth::Spacing::osm, 250.0},
+                                                         {truth::Spacing::sparse, 400.0},
+                                                         {truth::Spacing::very_sparse, 1250.0}};
+    double last_median = 0.0;
+    for (const auto& [spacing, max_step] : regimes) {
+        std::vector<double> gaps;
+        for (const auto seed : seeds) {
+            truth::TruthOptions o;
+            o.sigma_m = 0.1;
+            o.outlier_fraction = 0.0;
+            o.spacing = spacing;
+            const auto r = truth::make_route(seed, o);
+            const geometry::IndexedAlignment ia(r.design);
+            for (std::size_t i = 1; i < r.nodes.size(); ++i) {
+                gaps.push_back(ia.project(r.nodes[i].x, r.nodes[i].y).s - ia.project(r.nodes[i - 1].x, r.nodes[i - 1].y).s);
+            }
+        }
+        std::sort(gaps.begin(), gaps.end());
+        EXPECT_LE(gaps.back(), max_step + 1.0) << "max step " << max_step;
+        EXPECT_GT(gaps[gaps.size() / 2], last_median) << "max step " << max_step;
+        last_median = gaps[gaps.size() / 2];
+    }
+}
+
+TEST(TruthAlignment, SpacingsAreNamedAsOnTheCommandLine) {
+    EXPECT_EQ(truth::spacing_named("very-sparse"), truth::Spacing::very_sparse);
+    EXPECT_EQ(truth::spacing_named("osm"), truth::Spacing::osm);
+    EXPECT_FALSE(truth::spacing_named("very_sparse").has_value());
+    EXPECT_EQ(truth::deviation_limit(0.3, truth::Spacing::very_sparse), truth::deviation_limit(0.3, truth::Spacing::sparse));
 }
 
 TEST(TruthAlignment, TheDesignScoresPerfectly) {
