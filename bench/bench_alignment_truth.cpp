@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
             const std::string v = argv[++i];
             const std::optional<truth::Spacing> named = truth::spacing_named(v);
             if (!named) {
-                std::fprintf(stderr, "--spacing %s: not a spacing (osm, dense, sparse, very-sparse)\n", v.c_str());
+                std::fprintf(stderr, "--spacing %s: not a spacing (%s)\n", v.c_str(), truth::spacing_names().c_str());
                 std::exit(2);
             }
             o.spacing = *named;

@@ -53,7 +53,7 @@ Options parse(int argc, char** argv) {
             const std::string s = argv[++i];
             const std::optional<truth::Spacing> named = truth::spacing_named(s);
             if (!named) {
-                std::fprintf(stderr, "--spacing %s: not a spacing (osm, dense, sparse, very-sparse)\n", s.c_str());
+                std::fprintf(stderr, "--spacing %s: not a spacing (%s)\n", s.c_str(), truth::spacing_names().c_str());
                 std::exit(2);
             }
             o.spacing = *named;

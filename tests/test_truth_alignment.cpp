@@ -103,8 +103,13 @@ TEST(TruthAlignment, EachSpacingDrawsItsOwnGaps) {
             o.spacing = spacing;
             const auto r = truth::make_route(seed, o);
             const geometry::IndexedAlignment ia(r.design);
-            for (std::size_t i = 1; i < r.nodes.size(); ++i) {
-                gaps.push_back(ia.project(r.nodes[i].x, r.nodes[i].y).s - ia.project(r.nodes[i - 1].x, r.nodes[i - 1].y).s);
+            double last = 0.0;
+            for (std::size_t i = 0; i < r.nodes.size(); ++i) {
+                const double s = ia.project(r.nodes[i].x, r.nodes[i].y).s;
+                if (i > 0) {
+                    gaps.push_back(s - last);
+                }
+                last = s;
             }
         }
         std::sort(gaps.begin(), gaps.end());

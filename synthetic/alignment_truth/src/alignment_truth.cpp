@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace railodd::truth {
 
@@ -169,20 +170,29 @@ TruthRoute make_route(std::uint64_t seed, const TruthOptions& options) {
 
 std::size_t sign_changes(const Alignment& a) { return geometry::curvature_sign_changes(geometry::IndexedAlignment(a)); }
 
+namespace {
+
+// The command line's name of each spacing, in the enum's order.
+constexpr std::pair<const char*, Spacing> spacing_table[] = {
+    {"osm", Spacing::osm}, {"dense", Spacing::dense}, {"sparse", Spacing::sparse}, {"very-sparse", Spacing::very_sparse}};
+
+} // namespace
+
 std::optional<Spacing> spacing_named(const std::string& name) {
-    if (name == "osm") {
-        return Spacing::osm;
-    }
-    if (name == "dense") {
-        return Spacing::dense;
-    }
-    if (name == "sparse") {
-        return Spacing::sparse;
-    }
-    if (name == "very-sparse") {
-        return Spacing::very_sparse;
+    for (const auto& [n, spacing] : spacing_table) {
+        if (name == n) {
+            return spacing;
+        }
     }
     return std::nullopt;
+}
+
+std::string spacing_names() {
+    std::string out;
+    for (const auto& [n, spacing] : spacing_table) {
+        out += out.empty() ? n : std::string(", ") + n;
+    }
+    return out;
 }
 
 double deviation_limit(double sigma, Spacing spacing) {

@@ -27,6 +27,8 @@ enum class Spacing { osm, dense, sparse, very_sparse };
 // The spacing of a command line's name (osm, dense, sparse, very-sparse);
 // nothing for any other name.
 std::optional<Spacing> spacing_named(const std::string& name);
+// Those names, comma-separated (for a usage message).
+std::string spacing_names();
 
 struct TruthOptions {
     double sigma_m = 0.3;            // lateral scatter of the mapped nodes
