@@ -407,10 +407,13 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
         hold(w, ties.held);
         NextPass tried = next_pass(pass, p, w, next, ties, round == 0 ? Search::whole : Search::local);
         if (pass_cost(tried.pass, tried.on_map, next) > pass_cost(pass, on_map, next) + pass.options.parameter_penalty) {
-            // The pass stands, but its residuals tell the noise: left at the
-            // starting guess, a real chain's sigma-hat stayed 0.3 m (Lauf: a
-            // chain of 51 nodes whose residuals say 0.338 m).
-            sigma = round == 0 && !fixed ? next : sigma;
+            // The pass stands, but its residuals tell the noise (given, next
+            // is sigma): left at the starting guess, a real chain's sigma-hat
+            // stayed 0.3 m (Lauf: a chain of 51 nodes whose residuals say
+            // 0.338 m).
+            if (round == 0) {
+                sigma = next;
+            }
             break;
         }
         sigma = next;
