@@ -5,6 +5,64 @@
 
 namespace railodd::xodr {
 
+namespace {
+
+// Arcs flatter than this are written as paramPoly3. LibCarla evaluates an
+// arc from its centre, the radius cast to float (GeometryArc::PosFromDist):
+// a ulp of the radius off, 6 cm at R 944 km, where a design between two
+// curves that the nodes hold slightly bent put four roads of the sample
+// route 1.5-2.8 cm from their starts. At R 50 km the ulp is 4 mm.
+constexpr double flat_curvature = 1.0 / 50000.0;
+
+// Each cubic turns at most this far: its lateral error is about
+// 0.0044 * turn^3 * length, 2 micrometres at 500 m.
+constexpr double piece_turn = 0.01;
+
+// sin(a) / a - 1 and (1 - cos a) / a - a / 2 for |a| <= 0.01, by their
+// series: written as differences they cancel to nothing on flat arcs.
+double sinc_less_one(double a) { return -a * a / 6.0 + a * a * a * a / 120.0; }
+double versine_less_half(double a) { return -a * a * a / 24.0 + a * a * a * a * a / 720.0; }
+
+// A flat arc as paramPoly3 pieces (pRange arcLength): u = p + dU p^3,
+// v = k p^2 / 2 + dV p^3, its Taylor series to third order with dU and dV
+// set so each piece ends exactly where the arc does. Its start pose,
+// curvature and length are the arc's: continuity is kept.
+void flat_arc_as_cubics(const PlanGeometry& arc, std::vector<PlanGeometry>& out) {
+    const double k = arc.curv_start;
+    const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(std::abs(k) * arc.length / piece_turn - 1e-9)));
+    const double l = arc.length / static_cast<double>(n);
+    const double a = k * l;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = static_cast<double>(i) * l;
+        const double half = 0.5 * k * s; // the chord from the arc's start turns half as far
+        const double chord = s * (half == 0.0 ? 1.0 : std::sin(half) / half);
+        PlanGeometry g = arc;
+        g.kind = PlanGeometry::Kind::param_poly3;
+        g.s = arc.s + s;
+        g.x = arc.x + chord * std::cos(arc.hdg + half);
+        g.y = arc.y + chord * std::sin(arc.hdg + half);
+        g.hdg = arc.hdg + k * s;
+        g.length = i + 1 == n ? arc.length - s : l;
+        g.u = {0.0, 1.0, 0.0, sinc_less_one(a) / (l * l)};
+        g.v = {0.0, 0.0, 0.5 * k, versine_less_half(a) / (l * l)};
+        out.push_back(g);
+    }
+}
+
+void flat_arcs_as_cubics(std::vector<PlanGeometry>& records) {
+    std::vector<PlanGeometry> out;
+    for (const PlanGeometry& g : records) {
+        if (g.kind == PlanGeometry::Kind::arc && std::abs(g.curv_start) < flat_curvature && g.length > 0.0) {
+            flat_arc_as_cubics(g, out);
+        } else {
+            out.push_back(g);
+        }
+    }
+    records = std::move(out);
+}
+
+} // namespace
+
 std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment, bool rail) {
     std::vector<PlanGeometry> out;
     const std::vector<geometry::Pose> starts = geometry::primitive_starts(alignment);
@@ -45,6 +103,7 @@ std::vector<PlanGeometry> plan_view_of(const geometry::Alignment& alignment, boo
         out.push_back(g);
     }
     merge_short_records(out, min_record_length_m, rail);
+    flat_arcs_as_cubics(out);
     return out;
 }
 
