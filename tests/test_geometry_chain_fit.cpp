@@ -314,7 +314,9 @@ TEST(ChainFit, ATramLegTiedPastItsNodesHeadingIsSplicedFromAFreeStart) {
 // the tie bowed between the two ends and passed the middle node 10 m off:
 // its neighbours, a tied end and a free one, were taken as witnesses that
 // it was a lone spike. A free end node witnesses nothing (the fit always
-// reaches it), so the node is judged, and the tie is spliced on.
+// reaches it), so the node is judged; the search priced as elements close
+// finds a railway design through it from the tie (before, the tie was
+// spliced on).
 TEST(ChainFit, TheMiddleNodeOfAThreeNodeBranchIsNoLoneSpike) {
     const double deg = std::numbers::pi / 180.0;
     const geometry::Point mid{616.0 * std::cos(66.0 * deg), 616.0 * std::sin(66.0 * deg)};
@@ -322,7 +324,7 @@ TEST(ChainFit, TheMiddleNodeOfAThreeNodeBranchIsNoLoneSpike) {
         {0.0, 0.0}, mid, {mid.x + 49.0 * std::cos(64.0 * deg), mid.y + 49.0 * std::sin(64.0 * deg)}};
     const geometry::Pose start{0.0, 0.0, 60.4 * deg, 0.0};
     const geometry::ChainFit f = geometry::fit_chain_points(p, start, std::nullopt, design_search());
-    EXPECT_EQ(f.method, geometry::ChainMethod::spliced);
+    EXPECT_EQ(f.method, geometry::ChainMethod::railway);
     EXPECT_TRUE(geometry::drivable(f.alignment));
     EXPECT_LT(geometry::measure_fit(f.alignment, p).max_m, 1.0);
     const geometry::EndMiss m = geometry::start_miss(f.alignment, start);

@@ -426,6 +426,10 @@ FitResult fit_with(const std::vector<Point2>& mapped, const Ties& ties, const Fi
     }
     settle_node_weights(pass, weight, ties.held);
     pass = next_pass(pass, p, weight, sigma, ties, Search::windows).pass;
+    // Again: the last pass's windows can build a curve to a stray the first
+    // settling had no design bending to (truth seed 1158: a stray beside the
+    // free start followed by an S-curve the windows made, 6.5 m off).
+    settle_node_weights(pass, weight, ties.held);
     std::vector<Point> all, followed;
     for (std::size_t i = 0; i < p.size(); ++i) {
         all.push_back({mapped[i].x, mapped[i].y});

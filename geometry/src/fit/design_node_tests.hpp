@@ -27,6 +27,8 @@ double cubic_residual(const std::vector<FrameNode>& q, const std::array<std::siz
 bool off_trend(const DesignPass& pass, std::size_t i, double far);
 // Left-out node i lies on the trend of the kept nodes beyond its two neighbours.
 bool on_trend_beyond(const DesignPass& pass, std::size_t i, double far);
+// Nodes a and a + 1 next to a free end's node make a bump the track comes back from.
+bool bump_at_free_end(const DesignPass& pass, std::size_t a, double far);
 // Nodes i and i + 1 each lie off the chord of the kept nodes around them, on opposite sides.
 bool zigzag(const DesignPass& pass, std::size_t i, double far);
 

@@ -2,8 +2,8 @@
 // stray node the design bent to, a far node kept, a left-out node near a
 // free end that was the good one of two. Each is a model choice, made by
 // cost: the structure searched again over a window of nodes around it
-// (design_dp), spliced in and refined nearby, with one parameter for each
-// node left out (its own position) and the strays' term (stray_cost).
+// (design_dp), spliced in and refined nearby, with a stray's price for each
+// node left out and the strays' term (stray_cost).
 #include "design_node_tests.hpp"
 #include "design_pass.hpp"
 
@@ -15,6 +15,12 @@
 namespace railodd::geometry::fit {
 
 namespace {
+
+// A node left out costs the log odds of a 1 % stray mixture, 2 ln 99: one
+// L0 parameter (scaled by ln n, 3.3-6 on a chain) priced a good node too
+// cheaply where nodes are sparse (a guided sparse track left two good nodes
+// of 15 out and shed two elements, 14 m off; ParallelTracks seed 2005).
+const double left_out_price = 2.0 * std::log(99.0);
 
 // The structure searched again over the elements holding the nodes from
 // three before node `first` to three after node `last` (research_span).
@@ -30,8 +36,8 @@ FrameDesign research(const DesignPass& pass, const std::vector<FrameNode>& nodes
 }
 
 // The pass with nodes `out` left out and `in` taken back, the structure
-// searched again locally; its cost counts one parameter for each node left
-// out (its own position) less one for each taken back, and the strays'
+// searched again locally; its cost counts a stray's price for each node
+// left out less one for each taken back, and the strays'
 // offsets from the design (stray_cost, design_dp.hpp): leaving out a node
 // costs more the further the design then lies from it.
 struct Reweighed {
@@ -51,7 +57,7 @@ Reweighed reweighed(const DesignPass& pass, const std::vector<std::size_t>& out,
     }
     r.design = research(pass, r.nodes, span.first, span.second);
     const double spent = static_cast<double>(out.size()) - static_cast<double>(in.size());
-    r.cost = r.design.cost + stray_cost(r.design, r.nodes) + spent * pass.options.parameter_penalty;
+    r.cost = r.design.cost + stray_cost(r.design, r.nodes) + spent * left_out_price;
     return r;
 }
 
@@ -167,6 +173,27 @@ void add_pair_swap(const DesignPass& pass, std::size_t a, std::size_t b, double 
     }
 }
 
+// The swap of the pair just before the left-out run [a, b], judged by the
+// cubic through the two kept nodes before the pair and the run's first
+// two nodes (the run and the node after it where the run is one node).
+void add_pair_swap_before(const DesignPass& pass, std::size_t a, std::size_t b, double far, std::vector<Trial>& trials) {
+    const auto& q = pass.nodes;
+    const auto kept = [&](std::size_t j) { return q[j].w > 0.0; };
+    if (a < 5 || !(b + 2 < q.size()) || !(kept(a - 1) && kept(a - 2) && kept(a - 3) && kept(a - 4))) {
+        return;
+    }
+    const std::size_t p = a - 2; // the pair p, p + 1
+    std::vector<std::size_t> run;
+    for (std::size_t m = a; m <= b; ++m) {
+        run.push_back(m);
+    }
+    const std::array<std::size_t, 4> k{p - 2, p - 1, a, a + 1};
+    if (off_chord(pass, p, p + 1, far) && cubic_residual(q, k, p) > 2.0 * far &&
+        cubic_residual(q, k, p + 1) > 2.0 * far && (bent_to(pass, p) || bent_to(pass, p + 1))) {
+        trials.push_back({{p, p + 1}, run});
+    }
+}
+
 // Two strays side by side that the design follows, and the good nodes
 // before them it left out: the left-out run holding i (up to two nodes)
 // taken back and the two kept nodes after it left out, where both lie off
@@ -190,12 +217,17 @@ void add_pair_swaps(const DesignPass& pass, std::size_t i, double far, std::vect
         return;
     }
     add_pair_swap(pass, run->first, run->second, far, trials);
-    // The pair before the run, where a left-out run lies before it too.
+    // The pair before the run: as the pair after a left-out run before it,
+    // else with the cubic through the two kept nodes on its far side (OSM-like
+    // truth seed 1294 at 0.3 m: strays 7.2 and 3.3 m off just before a
+    // left-out run, followed by four arcs of R 22-63 m, 7.8 m off).
     const std::size_t a = run->first;
     if (a >= 4 && q[a - 1].w > 0.0 && q[a - 2].w > 0.0 && q[a - 3].w == 0.0) {
         if (const auto before = left_out_run(q, a - 3)) {
             add_pair_swap(pass, before->first, before->second, far, trials);
         }
+    } else {
+        add_pair_swap_before(pass, run->first, run->second, far, trials);
     }
 }
 
@@ -288,9 +320,12 @@ std::vector<Trial> stray_trials(const DesignPass& pass, std::size_t i, double fa
     // chord by the biweight cut: without, at 2 m of noise pairs of good
     // nodes were tried too (OSM-like rows at 2 m, 22 -> 24 routes beyond
     // the limit).
+    // Next to a free end too few kept nodes lie beyond the pair to tell a
+    // bump (bump_at_free_end).
     for (const std::size_t a : {i - 2, i - 1}) {
-        if (i >= 3 && kept(a) && kept(a + 1) && judged(a) && off_chord(pass, a, a + 1, far) &&
-            (stands_out(pass, a, 2) || zigzag(pass, a, far))) {
+        if (i >= 3 && kept(a) && kept(a + 1) &&
+            ((judged(a) && off_chord(pass, a, a + 1, far) && (stands_out(pass, a, 2) || zigzag(pass, a, far))) ||
+             bump_at_free_end(pass, a, far))) {
             trials.push_back({{a, a + 1}, {}});
         }
     }
