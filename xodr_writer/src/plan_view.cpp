@@ -32,16 +32,16 @@ void flat_arc_as_cubics(const PlanGeometry& arc, std::vector<PlanGeometry>& out)
     const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(std::abs(k) * arc.length / piece_turn - 1e-9)));
     const double l = arc.length / static_cast<double>(n);
     const double a = k * l;
+    const geometry::Primitive whole = geometry::make_arc(arc.length, k);
     for (std::size_t i = 0; i < n; ++i) {
         const double s = static_cast<double>(i) * l;
-        const double half = 0.5 * k * s; // the chord from the arc's start turns half as far
-        const double chord = s * (half == 0.0 ? 1.0 : std::sin(half) / half);
+        const geometry::Pose at = geometry::evaluate({arc.x, arc.y, arc.hdg}, whole, s);
         PlanGeometry g = arc;
         g.kind = PlanGeometry::Kind::param_poly3;
         g.s = arc.s + s;
-        g.x = arc.x + chord * std::cos(arc.hdg + half);
-        g.y = arc.y + chord * std::sin(arc.hdg + half);
-        g.hdg = arc.hdg + k * s;
+        g.x = at.x;
+        g.y = at.y;
+        g.hdg = at.hdg;
         g.length = i + 1 == n ? arc.length - s : l;
         g.u = {0.0, 1.0, 0.0, sinc_less_one(a) / (l * l)};
         g.v = {0.0, 0.0, 0.5 * k, versine_less_half(a) / (l * l)};

@@ -146,6 +146,24 @@ bool followed_pair(const DesignPass& pass, std::size_t j, double far) {
     return pass.distance[j] <= far && pass.distance[j + 1] <= far;
 }
 
+// Nodes a..b appended to `run`.
+void append(std::vector<std::size_t>& run, std::size_t a, std::size_t b) {
+    for (std::size_t m = a; m <= b; ++m) {
+        run.push_back(m);
+    }
+}
+
+// Whether kept pair j, j + 1 qualifies for a swap: both off the chord of
+// their neighbours and, by twice `far`, off the cubic through nodes k, and
+// the design bends to one of them or follows both within `far`.
+bool swappable(const DesignPass& pass, std::size_t j, const std::array<std::size_t, 4>& k, double far) {
+    const auto& q = pass.nodes;
+    // Cheapest tests first: bent_to walks the design's elements.
+    return off_chord(pass, j, j + 1, far) && cubic_residual(q, k, j) > 2.0 * far &&
+           cubic_residual(q, k, j + 1) > 2.0 * far &&
+           (followed_pair(pass, j, far) || bent_to(pass, j) || bent_to(pass, j + 1));
+}
+
 // The swap of the pair after the left-out run [a, b], where it qualifies;
 // a left-out run right after the pair is taken back with it (the good
 // nodes either side of two strays the design follows: OSM-like tied truth
@@ -159,24 +177,17 @@ void add_pair_swap(const DesignPass& pass, std::size_t a, std::size_t b, double 
         return;
     }
     std::vector<std::size_t> run;
-    for (std::size_t m = a; m <= b; ++m) {
-        run.push_back(m);
-    }
+    append(run, a, b);
     if (q[j + 2].w == 0.0) {
         const auto after = left_out_run(q, j + 2);
         if (!after || after->second + 1 >= n || !(q[after->second + 1].w > 0.0)) {
             return;
         }
-        for (std::size_t m = after->first; m <= after->second; ++m) {
-            run.push_back(m);
-        }
+        append(run, after->first, after->second);
     } else if (!(q[j + 2].w > 0.0 && q[j + 3].w > 0.0)) {
         return;
     }
-    const std::array<std::size_t, 4> k{j - 2, j - 1, j + 2, j + 3};
-    // Cheapest tests first: bent_to walks the design's elements.
-    if (off_chord(pass, j, j + 1, far) && cubic_residual(q, k, j) > 2.0 * far && cubic_residual(q, k, j + 1) > 2.0 * far &&
-        (followed_pair(pass, j, far) || bent_to(pass, j) || bent_to(pass, j + 1))) {
+    if (swappable(pass, j, {j - 2, j - 1, j + 2, j + 3}, far)) {
         trials.push_back({{j, j + 1}, run});
     }
 }
@@ -191,13 +202,9 @@ void add_pair_swap_before(const DesignPass& pass, std::size_t a, std::size_t b, 
         return;
     }
     const std::size_t p = a - 2; // the pair p, p + 1
-    std::vector<std::size_t> run;
-    for (std::size_t m = a; m <= b; ++m) {
-        run.push_back(m);
-    }
-    const std::array<std::size_t, 4> k{p - 2, p - 1, a, a + 1};
-    if (off_chord(pass, p, p + 1, far) && cubic_residual(q, k, p) > 2.0 * far && cubic_residual(q, k, p + 1) > 2.0 * far &&
-        (followed_pair(pass, p, far) || bent_to(pass, p) || bent_to(pass, p + 1))) {
+    if (swappable(pass, p, {p - 2, p - 1, a, a + 1}, far)) {
+        std::vector<std::size_t> run;
+        append(run, a, b);
         trials.push_back({{p, p + 1}, run});
     }
 }
