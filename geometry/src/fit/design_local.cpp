@@ -3,6 +3,7 @@
 #include "design_guide.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -15,6 +16,8 @@ using design::S;
 using design::Vec4;
 
 constexpr double infinite = std::numeric_limits<double>::infinity();
+// The most elements the local search puts in one window (design_refine.cpp).
+constexpr std::size_t max_window = 3;
 
 FrameState mirror(const FrameState& s) { return {s.z, -s.dz, s.k}; }
 
@@ -119,7 +122,7 @@ void StructureCosts::reset(const std::vector<FrameElement>& st) {
     }
 }
 
-bool StructureCosts::allowed(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const {
+bool StructureCosts::allowed(std::size_t j, std::size_t k, std::span<const FrameElement> w) const {
     const std::size_t m = st_.size();
     for (std::size_t i = 0; i < w.size(); ++i) {
         const double len = w[i].s1 - w[i].s0;
@@ -156,10 +159,10 @@ bool StructureCosts::open_at(std::size_t j, ElementKind kind, Quad& f) const {
     return design::open_element(f, kind, st_[j - 1].kind == ElementKind::transition && kind == ElementKind::transition);
 }
 
-double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update,
+double StructureCosts::window(std::size_t j, std::size_t k, std::span<const FrameElement> w, Update* update,
                               double bound) const {
     if (w.empty() || !allowed(j, k, w)) {
-        return infinite;
+                return infinite;
     }
     const std::size_t m = st_.size();
     const std::size_t next = j == 0 ? 0 : nodes_after(st_[j - 1].s1);
@@ -168,13 +171,20 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
     if (!open_at(j, w[0].kind, f)) {
         return infinite;
     }
-    std::vector<design::KnotMap> maps(w.size());
-    std::vector<Quad>* knots = nullptr;
+    // On the stack: the local search tries tens of millions of windows.
+    std::array<design::KnotMap, max_window> on_stack;
+    std::vector<design::KnotMap> on_heap;
+    design::KnotMap* maps = on_stack.data();
+    if (w.size() > max_window) {
+        on_heap.resize(w.size());
+        maps = on_heap.data();
+    }
+    Quad* knots = nullptr;
     if (update) {
         update->knots.assign(w.size() + 1, Quad{});
-        knots = &update->knots;
+        knots = update->knots.data();
     }
-    if (!walk(f, w, n_, next, end, o_, j == 0, k == m && !o_.end, &maps, knots)) {
+    if (!walk(f, w, n_, next, end, o_, j == 0, k == m && !o_.end, maps, knots)) {
         return infinite;
     }
     const double u = (w.back().s1 - w.back().s0) / S;
@@ -183,7 +193,7 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
     if (k == m) {
         cost = design::close_chain(f, u, w.back().kind, o_, &x);
     } else {
-        Quad g = design::to_knot(f, u, &maps.back());
+        Quad g = design::to_knot(f, u, &maps[w.size() - 1]);
         if (update) {
             update->knots.back() = g;
         }
@@ -198,17 +208,17 @@ double StructureCosts::window(std::size_t j, std::size_t k, const std::vector<Fr
     }
     // The new elements' priors only add.
     const double outside = outside_prior(j, k);
-    if (cost + outside >= bound) {
-        return cost + outside;
+        if (cost + outside >= bound) {
+                return cost + outside;
     }
     if (k < m) {
         y(3) = 0.0;
-        x = design::start_from_knot(maps.back(), y);
+        x = design::start_from_knot(maps[w.size() - 1], y);
     }
     return cost + window_prior(j, k, w, maps, x, outside, update ? &update->priors : nullptr);
 }
 
-void StructureCosts::replace(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) {
+void StructureCosts::replace(std::size_t j, std::size_t k, std::span<const FrameElement> w) {
     Update up;
     const double total = window(j, k, w, &up);
     const auto at = [](std::size_t i) { return static_cast<std::ptrdiff_t>(i); };
@@ -239,7 +249,7 @@ void StructureCosts::replace(std::size_t j, std::size_t k, const std::vector<Fra
 void StructureCosts::valid_up_to(std::size_t j) {
     while (forward_valid_ < j && forward_valid_ + 1 < st_.size()) {
         const std::size_t v = forward_valid_;
-        const std::vector<FrameElement> w{st_[v]};
+        const std::span<const FrameElement> w(&st_[v], 1);
         Quad f;
         open_at(v, w[0].kind, f);
         walk(f, w, n_, v == 0 ? 0 : nodes_after(st_[v - 1].s1), nodes_after(st_[v].s1), o_, v == 0, false,
@@ -260,8 +270,8 @@ double StructureCosts::outside_prior(std::size_t j, std::size_t k) const {
 // The priors with the window's elements as solved here (backtracked from the
 // last one's start state x) added to those outside it (`outside`, their
 // last full solve's values).
-double StructureCosts::window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
-                                    const std::vector<design::KnotMap>& maps, Vec4 x, double outside,
+double StructureCosts::window_prior(std::size_t j, std::size_t k, std::span<const FrameElement> w,
+                                    const design::KnotMap* maps, Vec4 x, double outside,
                                     std::vector<double>* priors) const {
     double prior = outside;
     const std::size_t m = st_.size();

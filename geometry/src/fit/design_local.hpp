@@ -11,6 +11,7 @@
 #include "design_rules.hpp"
 
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace railodd::geometry::fit {
@@ -21,15 +22,15 @@ namespace railodd::geometry::fit {
 // element may start the chain (at_chain_start: free or tied, or continuing
 // the element before a span) and its last end it at a free end (their
 // penalties say so).
-// maps[i] / knots[i + 1], where given, receive the knot after w[i] (the knot
-// cost before the next element opens). False where a knot forbids the next
+// maps[i] / knots[i + 1], where given (arrays of w.size() and w.size() + 1),
+// receive the knot after w[i] (the knot cost before the next element opens). False where a knot forbids the next
 // element; f ends as the last element's cost. Nodes sorted by t; a node at a
 // knot is the element's before it, or, with `at_knot_after`, the one's after
 // it (the backward pass runs along the mirrored chain, and a node counted on
 // both sides of a window's end cost every trial there its residual twice).
-bool walk(design::Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& nodes, std::size_t next,
-          std::size_t end, const DesignDpOptions& o, bool at_chain_start, bool last_at_free_end,
-          std::vector<design::KnotMap>* maps, std::vector<design::Quad>* knots, bool at_knot_after = false);
+bool walk(design::Quad& f, std::span<const FrameElement> w, const std::vector<FrameNode>& nodes, std::size_t next,
+          std::size_t end, const DesignDpOptions& o, bool at_chain_start, bool last_at_free_end, design::KnotMap* maps,
+          design::Quad* knots, bool at_knot_after = false);
 
 // The forward pass over a whole structure: its cost, the knot costs before
 // each element opens (knots[j] for j in 1..m-1), the knot maps for
@@ -78,7 +79,7 @@ public:
     // negative) are solved, it returns a value no less than `bound`: most
     // trials of the local search fail so, and the priors' backtracking
     // was a fifth of their time.
-    double replaced(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
+    double replaced(std::size_t j, std::size_t k, std::span<const FrameElement> w,
                     double bound = std::numeric_limits<double>::infinity()) const {
         return window(j, k, w, nullptr, bound);
     }
@@ -88,7 +89,7 @@ public:
     // valid_up_to asks, and the backward costs hold from the window's end
     // on, so the next trials must lie wholly after its first element. The
     // priors of elements outside it keep their values until the next reset.
-    void replace(std::size_t j, std::size_t k, const std::vector<FrameElement>& w);
+    void replace(std::size_t j, std::size_t k, std::span<const FrameElement> w);
 
     // Brings the forward knot costs up to knot j.
     void valid_up_to(std::size_t j);
@@ -98,12 +99,11 @@ private:
         std::vector<design::Quad> knots; // knots[i]: before w[i] opens (i >= 1); knots[w.size()]: before element k
         std::vector<double> priors;      // of w's elements
     };
-    double window(std::size_t j, std::size_t k, const std::vector<FrameElement>& w, Update* update,
+    double window(std::size_t j, std::size_t k, std::span<const FrameElement> w, Update* update,
                   double bound = std::numeric_limits<double>::infinity()) const;
-    bool allowed(std::size_t j, std::size_t k, const std::vector<FrameElement>& w) const;
-    double window_prior(std::size_t j, std::size_t k, const std::vector<FrameElement>& w,
-                        const std::vector<design::KnotMap>& maps, design::Vec4 x, double outside,
-                        std::vector<double>* priors) const;
+    bool allowed(std::size_t j, std::size_t k, std::span<const FrameElement> w) const;
+    double window_prior(std::size_t j, std::size_t k, std::span<const FrameElement> w, const design::KnotMap* maps,
+                        design::Vec4 x, double outside, std::vector<double>* priors) const;
     // The priors of the elements outside [j, k), as of the last full solve.
     double outside_prior(std::size_t j, std::size_t k) const;
     std::size_t nodes_after(double s) const;

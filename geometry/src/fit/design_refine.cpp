@@ -9,8 +9,11 @@
 #include "design_rules.hpp"
 
 #include <algorithm>
+#include <array>
+#include <initializer_list>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <utility>
 
 namespace railodd::geometry::fit {
@@ -85,11 +88,15 @@ private:
         }
     }
 
-    void offer(std::size_t j, std::size_t k, std::vector<FrameElement> w, Move& best) const {
+    // Trials are built on the stack: the local search tries tens of millions.
+    void offer(std::size_t j, std::size_t k, std::span<const FrameElement> w, Move& best) const {
         const double c = costs_.replaced(j, k, w, best.cost);
         if (c < best.cost) {
-            best = {j, k, std::move(w), c};
+            best = {j, k, std::vector<FrameElement>(w.begin(), w.end()), c};
         }
+    }
+    void offer(std::size_t j, std::size_t k, std::initializer_list<FrameElement> w, Move& best) const {
+        offer(j, k, std::span<const FrameElement>(w.begin(), w.size()), best);
     }
 
     // The knot at the start of element j moved by up to two knot steps.
@@ -99,10 +106,10 @@ private:
         }
         const double h = o_.knot_step_m;
         for (const double d : {-2 * h, -h, -0.5 * h, -0.25 * h, 0.25 * h, 0.5 * h, h, 2 * h}) {
-            std::vector<FrameElement> w{st[j - 1], st[j]};
+            std::array<FrameElement, 2> w{st[j - 1], st[j]};
             w[0].s1 += d;
             w[1].s0 += d;
-            offer(j - 1, j + 1, std::move(w), best);
+            offer(j - 1, j + 1, w, best);
         }
     }
 
@@ -119,12 +126,12 @@ private:
         }
         const double h = o_.knot_step_m;
         for (const double d : {-2 * h, -h, -0.5 * h, -0.25 * h, 0.25 * h, 0.5 * h, h, 2 * h}) {
-            std::vector<FrameElement> w{st[j - 1], st[j], st[j + 1]};
+            std::array<FrameElement, 3> w{st[j - 1], st[j], st[j + 1]};
             w[0].s1 -= d;
             w[1].s0 -= d;
             w[1].s1 += d;
             w[2].s0 += d;
-            offer(j - 1, j + 2, std::move(w), best);
+            offer(j - 1, j + 2, w, best);
         }
     }
 
@@ -144,10 +151,10 @@ private:
                 offer(j, j + 3, {FrameElement{k, st[j].s0, st[j + 2].s1, 0.0, 0.0}}, best);
             }
             const double mid = 0.5 * (st[j + 1].s0 + st[j + 1].s1);
-            std::vector<FrameElement> w{st[j], st[j + 2]};
+            std::array<FrameElement, 2> w{st[j], st[j + 2]};
             w[0].s1 = mid;
             w[1].s0 = mid;
-            offer(j, j + 3, std::move(w), best);
+            offer(j, j + 3, w, best);
         }
     }
 

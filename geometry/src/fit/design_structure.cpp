@@ -80,9 +80,9 @@ FrameState design_state(const FrameDesign& d, double t) {
     return along(d.elements[j], at.z, at.dz, t - d.elements[j].s0);
 }
 
-bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNode>& n, std::size_t next,
-          std::size_t end, const DesignDpOptions& o, bool at_chain_start, bool last_at_free_end,
-          std::vector<design::KnotMap>* maps, std::vector<Quad>* knots, bool at_knot_after) {
+bool walk(Quad& f, std::span<const FrameElement> w, const std::vector<FrameNode>& n, std::size_t next,
+          std::size_t end, const DesignDpOptions& o, bool at_chain_start, bool last_at_free_end, design::KnotMap* maps,
+          Quad* knots, bool at_knot_after) {
     const auto free_end = [&](std::size_t i) {
         return (i == 0 && at_chain_start && !o.start) || (i + 1 == w.size() && last_at_free_end);
     };
@@ -106,9 +106,9 @@ bool walk(Quad& f, const std::vector<FrameElement>& w, const std::vector<FrameNo
         if (last) {
             return true;
         }
-        Quad g = design::to_knot(f, (e.s1 - e.s0) / S, maps ? &(*maps)[i] : nullptr);
+        Quad g = design::to_knot(f, (e.s1 - e.s0) / S, maps ? &maps[i] : nullptr);
         if (knots) {
-            (*knots)[i + 1] = g;
+            knots[i + 1] = g;
         }
         const ElementKind k = w[i + 1].kind;
         if (!design::open_element(g, k, e.kind == ElementKind::transition && k == ElementKind::transition)) {
@@ -128,7 +128,7 @@ ForwardPass forward_pass(const std::vector<FrameNode>& n, const std::vector<Fram
     r.knots.assign(st.size() + 1, Quad{});
     r.maps.assign(st.size(), design::KnotMap{});
     Quad f = design::first_element(st.front().kind, o);
-    if (!walk(f, st, n, 0, n.size(), o, true, !o.end, &r.maps, &r.knots, at_knot_after)) {
+    if (!walk(f, st, n, 0, n.size(), o, true, !o.end, r.maps.data(), r.knots.data(), at_knot_after)) {
         throw std::invalid_argument("solve_structure: the design rules forbid this sequence");
     }
     r.cost = design::close_chain(f, (st.back().s1 - st.back().s0) / S, st.back().kind, o, &r.last_start);
