@@ -5,6 +5,7 @@
 #include "fit/design_local.hpp"
 
 #include <gtest/gtest.h>
+#include <array>
 
 #include <cmath>
 #include <functional>
@@ -235,7 +236,8 @@ TEST(DesignDp, LocalCostOfAReplacedWindowIsTheWholeCost) {
             EXPECT_GE(costs.replaced(c.j, c.k, c.w, 0.5 * whole_cost), 0.5 * whole_cost);
         }
         // An arc straight after a line is no railway design.
-        EXPECT_TRUE(std::isinf(costs.replaced(1, 2, {{ElementKind::arc, 200, 260, 0, 0}})));
+        const std::array<FrameElement, 1> arc_after_line{{{ElementKind::arc, 200, 260, 0, 0}}};
+        EXPECT_TRUE(std::isinf(costs.replaced(1, 2, arc_after_line)));
     }
 }
 
@@ -260,7 +262,7 @@ TEST(DesignDp, LocalCostsHoldOnAChainTiedFarFromItsFrame) {
     costs.reset(truth.elements);
     EXPECT_LT(costs.cost(), 200.0);
     for (std::size_t j = 0; j < truth.elements.size(); ++j) {
-        EXPECT_NEAR(costs.replaced(j, j + 1, {truth.elements[j]}), costs.cost(), 1e-2) << j;
+        EXPECT_NEAR(costs.replaced(j, j + 1, {&truth.elements[j], 1}), costs.cost(), 1e-2) << j;
     }
 }
 
