@@ -5,8 +5,8 @@
 #include "fit/design_local.hpp"
 
 #include <gtest/gtest.h>
-#include <array>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>

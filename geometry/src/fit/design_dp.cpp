@@ -304,13 +304,13 @@ void Search::keep_best() {
         if (it->second >= o_.spawn) {
             continue;
         }
-        const std::vector<std::size_t>& rivals = of_kind[static_cast<std::size_t>(h.kind)];
-        if (!fresh && std::any_of(rivals.begin(), rivals.end(), [&](std::size_t k) { return near_copy(h, kept[k]); })) {
+        std::vector<std::size_t>& same_kind = of_kind[static_cast<std::size_t>(h.kind)];
+        if (!fresh && std::any_of(same_kind.begin(), same_kind.end(), [&](std::size_t k) { return near_copy(h, kept[k]); })) {
             continue;
         }
         ++it->second;
         old += fresh ? 0 : 1;
-        of_kind[static_cast<std::size_t>(h.kind)].push_back(kept.size());
+        same_kind.push_back(kept.size());
         kept.push_back(std::move(h));
     }
     live_.swap(kept);
