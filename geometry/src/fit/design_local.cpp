@@ -110,10 +110,11 @@ void StructureCosts::reset(const std::vector<FrameElement>& st) {
         ms.push_back({e.kind, -e.s1, -e.s0, 0.0, 0.0});
     }
     const std::vector<Quad> mk = forward_pass(mirrored_, ms, mirror_options_, true).knots;
-    backward_.assign(m + 1, Quad{});
-    for (std::size_t k = 1; k < m; ++k) {
-        backward_[k] = mirror(mk[m - k]);
+    from_end_.assign(m + 1, Quad{});
+    for (std::size_t r = 1; r < m; ++r) {
+        from_end_[r] = mirror(mk[r]);
     }
+    from_end_valid_ = m;
     prior_.assign(m, 0.0);
     prior_total_ = 0.0;
     for (std::size_t j = 0; j < m; ++j) {
@@ -203,7 +204,7 @@ double StructureCosts::window(std::size_t j, std::size_t k, std::span<const Fram
         if (st_[k].kind == ElementKind::arc && !(g.free & 4u)) {
             return infinite;
         }
-        design::add_quad(g, backward_[k]);
+        design::add_quad(g, backward(k));
         cost = design::minimum(g, &y);
     }
     // The new elements' priors only add.
@@ -227,18 +228,17 @@ void StructureCosts::replace(std::size_t j, std::size_t k, std::span<const Frame
     st_.insert(st_.begin() + at(j), w.begin(), w.end());
     prior_.erase(prior_.begin() + at(j), prior_.begin() + at(k));
     prior_.insert(prior_.begin() + at(j), up.priors.begin(), up.priors.end());
-    // Knot i's costs: forward_ before the window's first, backward_ from its end on.
-    forward_.resize(j + 1);
-    for (std::size_t i = 1; i <= n && j + i < st_.size(); ++i) {
-        forward_.push_back(up.knots[i]);
-    }
-    forward_valid_ = forward_.size() - 1;
+    // Knot i's costs: forward_ up to the window's last inner knot, the
+    // costs after it from its end on (from_end_ up to the old end's k).
+    const std::size_t kept_from_end = from_end_.size() - 1 - k;
     forward_.resize(st_.size() + 1);
-    std::vector<Quad> back(st_.size() + 1);
-    for (std::size_t i = k; i < backward_.size(); ++i) {
-        back[i - k + j + n] = backward_[i];
+    forward_valid_ = j;
+    for (std::size_t i = 1; i <= n && j + i < st_.size(); ++i) {
+        forward_[j + i] = up.knots[i];
+        forward_valid_ = j + i;
     }
-    backward_ = std::move(back);
+    from_end_.resize(st_.size() + 1);
+    from_end_valid_ = kept_from_end;
     prior_total_ = 0.0;
     for (const double p : prior_) {
         prior_total_ += p;

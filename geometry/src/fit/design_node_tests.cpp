@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 
 namespace railodd::geometry::fit {
 
@@ -86,14 +87,27 @@ std::vector<FrameNode> kept_beside(const DesignPass& pass, std::size_t i, std::s
 namespace {
 
 // Whether design d spends two or more knots between node i's neighbours.
+// The elements from `from` on whose start lies strictly between lo and hi,
+// by bisection: the elements run in chainage order, and a scan of all of
+// them per node made the node tests quadratic in a chain's length.
+std::span<const FrameElement> knots_within(const FrameDesign& d, double lo, double hi, std::size_t from) {
+    const auto& el = d.elements;
+    if (el.size() <= from) {
+        return {};
+    }
+    const auto first = std::upper_bound(el.begin() + static_cast<std::ptrdiff_t>(from), el.end(), lo,
+                                        [](double t, const FrameElement& e) { return t < e.s0; });
+    const auto last = std::lower_bound(first, el.end(), hi, [](const FrameElement& e, double t) { return e.s0 < t; });
+    return {first, last};
+}
+
 bool bends_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t i) {
     if (i == 0 || i + 1 >= q.size() || q[i].w == 0.0) {
         return false;
     }
-    const auto& el = d.elements;
     const double lo = std::min(q[i - 1].t, q[i + 1].t);
     const double hi = std::max(q[i - 1].t, q[i + 1].t);
-    return std::count_if(el.begin() + 1, el.end(), [&](const FrameElement& e) { return e.s0 > lo && e.s0 < hi; }) >= 2;
+    return knots_within(d, lo, hi, 1).size() >= 2;
 }
 
 } // namespace
@@ -116,10 +130,8 @@ bool bumps_at(const FrameDesign& d, const std::vector<FrameNode>& q, std::size_t
     const double lo = std::min(q[a].t, q[b].t);
     const double hi = std::max(q[a].t, q[b].t);
     std::vector<double> k{design_state(d, lo).k};
-    for (const FrameElement& e : d.elements) {
-        if (e.s0 > lo && e.s0 < hi) {
-            k.push_back(e.k0);
-        }
+    for (const FrameElement& e : knots_within(d, lo, hi, 0)) {
+        k.push_back(e.k0);
     }
     k.push_back(design_state(d, hi).k);
     bool up = false, down = false;
