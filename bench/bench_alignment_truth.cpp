@@ -2,7 +2,7 @@
 // designs drawn like OSM, fitted at default options, scored against the
 // design. Run: build/bench/bench_alignment_truth [ROUTES] [SIGMA ...]
 // [--outliers F] [--worst N] [--bound] [--first SEED] [--spacing
-// osm|dense|sparse|very-sparse] [--method design|windowed] [--tied] [--chain] (defaults: 300 routes from
+// osm|dense|sparse|very-sparse] [--method design|windowed] [--tied] [--chain] [--km L] (defaults: 300 routes from
 // seed 1000, sigma 0.1 0.3 1.0, 1 % outliers, OSM-like node spacing
 // (alignment_truth.hpp), the design search (the default fit); --worst lists the
 // N worst routes and arcs; --bound
@@ -12,7 +12,8 @@
 // fit misses nodes, and counts each). Prints, per sigma, the
 // deviation of the fit from the true centreline, the radius error of every
 // design arc, elements against the design and spurious curvature sign
-// changes: the figures issue 18's targets are stated in.
+// changes: the figures issue 18's targets are stated in. --km draws routes
+// at least L km long (default 8): how the fit's time grows with a chain.
 #include "chain_fit.hpp"
 #include "design_crlb.hpp"
 
@@ -68,6 +69,7 @@ struct Options {
     geometry::FitMethod method = geometry::FitMethod::design_search;
     bool tied = false; // both ends tied to the design's pose there, as a chain between two switches is
     bool chain = false; // as the network's fit builds a chain (fit_chain_points: splices, patches, corners)
+    double length_m = truth::TruthOptions{}.length_m;
 };
 
 // The design's pose where a node's foot is: what a switch ties a chain's end to.
@@ -149,6 +151,7 @@ void run_sigma(const Options& opt, double sigma) {
         o.sigma_m = sigma;
         o.outlier_fraction = outliers;
         o.spacing = opt.spacing;
+        o.length_m = opt.length_m;
         const int seed = opt.first + i;
         const truth::TruthRoute r = truth::make_route(static_cast<std::uint64_t>(seed), o);
         const auto t0 = std::chrono::steady_clock::now();
@@ -231,6 +234,8 @@ int main(int argc, char** argv) {
             o.spacing = *named;
         } else if (a == "--method" && i + 1 < argc) {
             o.method = std::string(argv[++i]) == "design" ? geometry::FitMethod::design_search : geometry::FitMethod::windowed;
+        } else if (a == "--km" && i + 1 < argc) {
+            o.length_m = 1000.0 * std::atof(argv[++i]);
         } else if (a == "--tied") {
             o.tied = true;
         } else if (a == "--chain") {

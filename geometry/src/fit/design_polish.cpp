@@ -144,6 +144,7 @@ SolveOptions polish_options(const DesignPass& pass, const CurvatureModel& m, con
     // (least_squares.cpp): more steps where there is one.
     so.max_iterations = end ? 25 : 15;
     so.geodesic_acceleration = true;
+    so.chain_solve = true;
     for (const double w : weight) {
         so.point_scale.push_back(std::sqrt(w));
     }

@@ -29,7 +29,7 @@ struct Schur {
     bool ok = false;
 };
 
-Schur schur(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::MatrixXd& C) {
+Schur schur(const NormalMatrix& A, const Eigen::MatrixXd& C) {
     Schur s;
     s.W = A.solve(C.transpose());
     const Eigen::MatrixXd S = C * s.W;
@@ -46,7 +46,7 @@ Schur schur(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::MatrixXd& C) {
 
 } // namespace
 
-std::optional<Eigen::VectorXd> constrained_step(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
+std::optional<Eigen::VectorXd> constrained_step(const NormalMatrix& A, const Eigen::VectorXd& g,
                                                 const Eigen::MatrixXd& C, const Eigen::VectorXd& c) {
     const Schur s = schur(A, C);
     if (!s.ok) {
@@ -61,7 +61,7 @@ std::optional<Eigen::VectorXd> constrained_step(const Eigen::LDLT<Eigen::MatrixX
     return d;
 }
 
-double project_onto_end(Eigen::VectorXd& values, const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::MatrixXd& C,
+double project_onto_end(Eigen::VectorXd& values, const NormalMatrix& A, const Eigen::MatrixXd& C,
                         const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& apply) {
     Eigen::VectorXd gap = apply(values);
     double best = gap.cwiseAbs().maxCoeff();
@@ -110,7 +110,7 @@ bool meet_end(CurvatureModel& m, const Pose& target) {
         map.set_one(nudged, i, base[i]);
         metric[static_cast<long>(j)] = map.is_curvature(i) ? end_curvature_scale * end_curvature_scale : 1.0;
     }
-    const Eigen::LDLT<Eigen::MatrixXd> A(Eigen::MatrixXd(metric.asDiagonal()));
+    const DenseNormal A(Eigen::MatrixXd(metric.asDiagonal()));
     Eigen::VectorXd v(static_cast<long>(moved.size()));
     for (std::size_t j = 0; j < moved.size(); ++j) {
         v[static_cast<long>(j)] = base[moved[j]];

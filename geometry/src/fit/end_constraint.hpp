@@ -7,6 +7,7 @@
 // step solves the linearised constraints exactly (a KKT system) and the trial
 // is projected back onto them, so the steps only have to reduce the data
 // residuals.
+#include "chain_system.hpp"
 #include "curvature_model.hpp"
 
 #include <Eigen/Dense>
@@ -37,7 +38,7 @@ constexpr double end_tolerance = 1e-8;
 // The step d minimising 1/2 d^T A d + g^T d subject to C d = -c, with A (the
 // damped normal matrix) already factored. None if the constraints are
 // degenerate for this model (fewer effective parameters than rows).
-std::optional<Eigen::VectorXd> constrained_step(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
+std::optional<Eigen::VectorXd> constrained_step(const NormalMatrix& A, const Eigen::VectorXd& g,
                                                 const Eigen::MatrixXd& C, const Eigen::VectorXd& c);
 
 // Moves `values` (the model's parameters) towards the constraint surface by
@@ -45,7 +46,7 @@ std::optional<Eigen::VectorXd> constrained_step(const Eigen::LDLT<Eigen::MatrixX
 // the gap: each costs one pass over the segments. `apply` writes values into
 // the model (with its bounds) and returns the model's gap. Returns the
 // largest remaining gap row; below end_tolerance the end is met.
-double project_onto_end(Eigen::VectorXd& values, const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::MatrixXd& C,
+double project_onto_end(Eigen::VectorXd& values, const NormalMatrix& A, const Eigen::MatrixXd& C,
                       const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& apply);
 
 // The model moved onto the end pose by the least change to its last

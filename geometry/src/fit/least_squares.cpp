@@ -33,6 +33,82 @@ bool hopeless(double cost, double gain, int remaining, double target) {
     return cost * std::pow(1.0 - std::min(1.0, 2.0 * gain), remaining) > target;
 }
 
+// J^T J and J^T r of one linearisation, damped and factored on demand:
+// dense, or a chain's (chain_system.hpp).
+class Normal {
+public:
+    explicit Normal(const Linearisation& lin) : lin_(lin) {
+        if (lin.chain) {
+            chain_.emplace(*lin.chain);
+            diagonal_ = chain_->diagonal();
+            column_norms_ = diagonal_;
+            gradient_ = chain_->transpose_times(lin.r);
+            return;
+        }
+        dense_equations();
+        diagonal_ = JtJ_.diagonal();
+        column_norms_ = lin.J.colwise().squaredNorm().transpose();
+    }
+    const Eigen::VectorXd& gradient() const noexcept { return gradient_; }
+    // J's columns' squared norms: J^T J's diagonal (for a dense J summed
+    // apart from it).
+    const Eigen::VectorXd& column_norms() const noexcept { return column_norms_; }
+    Eigen::VectorXd times(const Eigen::VectorXd& v) const {
+        return chain_ ? chain_->times(v) : Eigen::VectorXd(lin_.J * v);
+    }
+    Eigen::VectorXd transpose_times(const Eigen::VectorXd& y) const {
+        return chain_ ? chain_->transpose_times(y) : Eigen::VectorXd(lin_.J.transpose() * y);
+    }
+    // J^T J + mu diag(J^T J), factored.
+    const NormalMatrix& damped(double mu) {
+        const Eigen::VectorXd d = mu * (diagonal_.array() + 1e-12).matrix();
+        if (chain_) {
+            chain_->factor(d);
+            return *chain_;
+        }
+        Eigen::MatrixXd A = JtJ_;
+        A.diagonal() += d;
+        dense_.emplace(A);
+        return *dense_;
+    }
+
+private:
+    // J^T J (lower triangle: LDLT reads no more) and J^T r. The dense point
+    // rows by one product; the sparse rows below them one at a time, by their
+    // non-zero entries: the fine spline has two smoothness rows per knot and
+    // about a knot per point, so a dense product over them was most of its
+    // cost.
+    void dense_equations() {
+        const Linearisation& lin = lin_;
+        const long cols = lin.J.cols(), top = std::min(lin.dense_rows, lin.J.rows());
+        JtJ_ = Eigen::MatrixXd::Zero(cols, cols);
+        JtJ_.selfadjointView<Eigen::Lower>().rankUpdate(lin.J.topRows(top).transpose());
+        gradient_ = lin.J.topRows(top).transpose() * lin.r.head(top);
+        std::vector<long> nz;
+        for (long row = top; row < lin.J.rows(); ++row) {
+            nz.clear();
+            for (long c = 0; c < cols; ++c) {
+                if (lin.J(row, c) != 0.0) {
+                    nz.push_back(c);
+                }
+            }
+            for (std::size_t a = 0; a < nz.size(); ++a) {
+                const double ja = lin.J(row, nz[a]);
+                gradient_[nz[a]] += ja * lin.r[row];
+                for (std::size_t b = 0; b <= a; ++b) {
+                    JtJ_(nz[a], nz[b]) += ja * lin.J(row, nz[b]);
+                }
+            }
+        }
+    }
+
+    const Linearisation& lin_;
+    Eigen::MatrixXd JtJ_;
+    Eigen::VectorXd gradient_, diagonal_, column_norms_;
+    std::optional<ChainSystem> chain_;
+    std::optional<DenseNormal> dense_;
+};
+
 // How the end pose is held: not at all, as exact constraints, or (where the
 // model cannot meet it exactly) as heavily weighted residual rows.
 enum class EndMode { none, exact, weighted };
@@ -125,17 +201,14 @@ private:
         }
         const double cost = lin.r.squaredNorm();
         const double gap = mode_ == EndMode::exact ? lin.c.cwiseAbs().maxCoeff() : 0.0;
-        Eigen::MatrixXd JtJ;
-        Eigen::VectorXd g;
-        normal_equations(lin, JtJ, g);
+        Normal normal(lin);
         for (int tries = 0; tries < 10; ++tries) {
-            Eigen::MatrixXd A = JtJ;
-            A.diagonal() += mu_ * (JtJ.diagonal().array() + 1e-12).matrix();
-            const Eigen::LDLT<Eigen::MatrixXd> ldlt(A);
+            const NormalMatrix& A = normal.damped(mu_);
             // Away from the end pose, steps aim at a shrinking share of the
             // gap until one closes part of it.
             const double share = on_end_ ? 1.0 : std::pow(0.5, tries);
-            std::optional<Trial> t = mode_ == EndMode::exact ? exact_trial(ldlt, g, lin, share) : free_trial(ldlt, g, lin);
+            std::optional<Trial> t =
+                mode_ == EndMode::exact ? exact_trial(A, normal, lin, share) : free_trial(A, normal, lin);
             if (!t) {
                 mode_ = EndMode::weighted; // this model cannot meet the end exactly
                 return Outcome::fell_back;
@@ -163,34 +236,6 @@ private:
         return Outcome::stuck;
     }
 
-    // J^T J (lower triangle: LDLT reads no more) and J^T r. The dense point
-    // rows by one product; the sparse rows below them one at a time, by their
-    // non-zero entries: the fine spline has two smoothness rows per knot and
-    // about a knot per point, so a dense product over them was most of its
-    // cost.
-    static void normal_equations(const Linearisation& lin, Eigen::MatrixXd& JtJ, Eigen::VectorXd& g) {
-        const long cols = lin.J.cols(), top = std::min(lin.dense_rows, lin.J.rows());
-        JtJ = Eigen::MatrixXd::Zero(cols, cols);
-        JtJ.selfadjointView<Eigen::Lower>().rankUpdate(lin.J.topRows(top).transpose());
-        g = lin.J.topRows(top).transpose() * lin.r.head(top);
-        std::vector<long> nz;
-        for (long row = top; row < lin.J.rows(); ++row) {
-            nz.clear();
-            for (long c = 0; c < cols; ++c) {
-                if (lin.J(row, c) != 0.0) {
-                    nz.push_back(c);
-                }
-            }
-            for (std::size_t a = 0; a < nz.size(); ++a) {
-                const double ja = lin.J(row, nz[a]);
-                g[nz[a]] += ja * lin.r[row];
-                for (std::size_t b = 0; b <= a; ++b) {
-                    JtJ(nz[a], nz[b]) += ja * lin.J(row, nz[b]);
-                }
-            }
-        }
-    }
-
     void accept(CurvatureModel&& m, double before, double after, Evaluated&& e) {
         known_ = std::move(e);
         gain_ = (before - after) / std::max(before, 1e-30);
@@ -200,12 +245,11 @@ private:
         mu_ = std::max(mu_ / 3, 1e-9);
     }
 
-    std::optional<Trial> free_trial(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
-                                    const Linearisation& lin) const {
+    std::optional<Trial> free_trial(const NormalMatrix& A, const Normal& normal, const Linearisation& lin) const {
         const Eigen::VectorXd x = to_eigen(map_.get(model_));
-        const Eigen::VectorXd v = A.solve(-g);
+        const Eigen::VectorXd v = A.solve(-normal.gradient());
         Trial t{model_, 0.0};
-        apply(t.model, x + v + 0.5 * acceleration(A, lin, x, v));
+        apply(t.model, x + v + 0.5 * acceleration(A, normal, lin, x, v));
         return t;
     }
 
@@ -213,7 +257,7 @@ private:
     // derivative of the residuals along the step bends it along the curved
     // valleys that otherwise hold LM to small steps. Zero where it would
     // dominate the step.
-    Eigen::VectorXd acceleration(const Eigen::LDLT<Eigen::MatrixXd>& A, const Linearisation& lin,
+    Eigen::VectorXd acceleration(const NormalMatrix& A, const Normal& normal, const Linearisation& lin,
                                  const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
         if (!p_.opt.geodesic_acceleration) {
             return Eigen::VectorXd::Zero(v.size());
@@ -225,18 +269,18 @@ private:
         if (r2.size() != lin.r.size()) {
             return Eigen::VectorXd::Zero(v.size());
         }
-        const Eigen::VectorXd rvv = (2.0 / h) * ((r2 - lin.r) / h - lin.J * v);
-        const Eigen::VectorXd a = -A.solve(lin.J.transpose() * rvv);
-        const Eigen::VectorXd scale = (lin.J.colwise().squaredNorm().array() + 1e-12).sqrt().matrix().transpose();
+        const Eigen::VectorXd rvv = (2.0 / h) * ((r2 - lin.r) / h - normal.times(v));
+        const Eigen::VectorXd a = -A.solve(normal.transpose_times(rvv));
+        const Eigen::VectorXd scale = (normal.column_norms().array() + 1e-12).sqrt().matrix();
         const double ratio = a.cwiseProduct(scale).norm() / std::max(v.cwiseProduct(scale).norm(), 1e-300);
         return 2.0 * ratio <= 0.75 ? a : Eigen::VectorXd::Zero(v.size());
     }
 
     // The constrained step (closing `share` of the end gap), then on towards
     // the end pose.
-    std::optional<Trial> exact_trial(const Eigen::LDLT<Eigen::MatrixXd>& A, const Eigen::VectorXd& g,
-                                     const Linearisation& lin, double share) const {
-        const std::optional<Eigen::VectorXd> d = constrained_step(A, g, lin.C, share * lin.c);
+    std::optional<Trial> exact_trial(const NormalMatrix& A, const Normal& normal, const Linearisation& lin,
+                                     double share) const {
+        const std::optional<Eigen::VectorXd> d = constrained_step(A, normal.gradient(), lin.C, share * lin.c);
         if (!d) {
             return std::nullopt;
         }
@@ -259,6 +303,18 @@ private:
     }
 
     void append_end_rows(Linearisation& lin) const {
+        if (lin.chain) {
+            const long n = lin.r.size(), k = lin.end_state.rows();
+            for (long g = 0; g < k; ++g) {
+                ChainRow row;
+                row.stage = lin.chain->segments();
+                row.c.head<chain_states>() = end_weight * lin.end_state.row(g).transpose();
+                lin.chain->rows.push_back(row);
+            }
+            lin.r.conservativeResize(n + k);
+            lin.r.tail(k) = end_weight * lin.c;
+            return;
+        }
         const long n = lin.J.rows(), k = lin.C.rows();
         lin.J.conservativeResize(n + k, Eigen::NoChange);
         lin.J.bottomRows(k) = end_weight * lin.C;

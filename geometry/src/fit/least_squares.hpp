@@ -65,6 +65,10 @@ struct SolveOptions {
     // chain shares with a parallel track (design_guided.cpp), which the
     // chain's own nodes, sparse, would let slide along a flat valley.
     std::vector<double> knot_at, knot_weight;
+    // Solve the normal equations by the chain's Riccati recursion
+    // (chain_system.hpp): linear in the segments where the dense solve is
+    // cubic. Only where no kink or ridge rows are asked for.
+    bool chain_solve = false;
 };
 
 struct SolveReport {

@@ -2,12 +2,14 @@
 // The residuals of a CurvatureModel against its data points, and their
 // Jacobian: feet of the points on the curve, normal distances, smoothness
 // rows, the end gap (least_squares.cpp runs Levenberg-Marquardt on them).
+#include "chain_system.hpp"
 #include "curvature_model.hpp"
 #include "least_squares.hpp"
 
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace railodd::geometry::fit {
@@ -61,6 +63,11 @@ struct Linearisation {
     long dense_rows = 0;
     Eigen::MatrixXd C; // end gap rows, with an end pose
     Eigen::VectorXd c;
+    // Where the solve is a chain's (SolveOptions::chain_solve): J in
+    // state-space form instead (J above stays empty), and the end gap's
+    // rows on the end state.
+    std::optional<ChainJacobian> chain;
+    Eigen::MatrixXd end_state;
 };
 
 // First feet of the points, in track order: each is searched along the curve
