@@ -66,7 +66,7 @@ int slot_of(const ChainStage& st, long p) {
 }
 
 struct Rows {
-    std::size_t points = 0, pinned_first = 0, pinned_last = 0, transition = 0, guide = 0, knot = 0;
+    std::size_t pinned_first = 0, pinned_last = 0, transition = 0, guide = 0, knot = 0;
 };
 
 // The rows' layout (fill_residuals) and their parts on the state: the
@@ -112,13 +112,7 @@ Rows fill_rows(const CurvatureModel& m, const Problem& p, const std::vector<Foot
 std::vector<Eigen::Vector3d> fill_columns(const CurvatureModel& m, const ParameterMap& map, const Problem& p,
                                           const std::vector<Foot>& feet, const std::vector<Pose>& poses,
                                           const Eigen::VectorXd& r, const Rows& at, const Point2& o, ChainJacobian& J) {
-    std::vector<std::size_t> first_on(m.segments() + 1, feet.size());
-    for (std::size_t i = feet.size(); i-- > 0;) {
-        first_on[feet[i].segment] = i;
-    }
-    for (std::size_t j = m.segments(); j-- > 0;) {
-        first_on[j] = std::min(first_on[j], first_on[j + 1]);
-    }
+    const std::vector<std::size_t> first_on = first_feet_on(feet, m.segments());
     const std::vector<double> base = map.get(m);
     std::vector<Pose> p2(poses.size());
     std::vector<Eigen::Vector3d> twists(map.size(), Eigen::Vector3d::Zero());
@@ -168,6 +162,19 @@ std::vector<Eigen::Vector3d> fill_columns(const CurvatureModel& m, const Paramet
     return twists;
 }
 
+// The end gap's rows on the end state (twist about `origin`, curvature):
+// the end pose moves rigidly with the twist.
+void end_state_rows(const CurvatureModel& m, const Pose& end, const Point2& origin, Linearisation& lin) {
+    const double ex = end.x - origin.x, ey = end.y - origin.y;
+    lin.end_state = Eigen::MatrixXd::Zero(static_cast<long>(end_rows(m)), chain_states);
+    lin.end_state.row(0) << -ey, 1, 0, 0, 0;
+    lin.end_state.row(1) << ex, 0, 1, 0, 0;
+    lin.end_state(2, 0) = end_heading_scale;
+    if (lin.end_state.rows() == 4) {
+        lin.end_state(3, 3) = end_curvature_scale;
+    }
+}
+
 } // namespace
 
 bool chain_form(const CurvatureModel& m, const Problem& p) {
@@ -215,17 +222,6 @@ void chain_linearise(const CurvatureModel& m, const ParameterMap& map, const Pro
         }
     }
     lin.chain = std::move(J);
-}
-
-void end_state_rows(const CurvatureModel& m, const Pose& end, const Point2& origin, Linearisation& lin) {
-    const double ex = end.x - origin.x, ey = end.y - origin.y;
-    lin.end_state = Eigen::MatrixXd::Zero(static_cast<long>(end_rows(m)), chain_states);
-    lin.end_state.row(0) << -ey, 1, 0, 0, 0;
-    lin.end_state.row(1) << ex, 0, 1, 0, 0;
-    lin.end_state(2, 0) = end_heading_scale;
-    if (lin.end_state.rows() == 4) {
-        lin.end_state(3, 3) = end_curvature_scale;
-    }
 }
 
 } // namespace railodd::geometry::fit

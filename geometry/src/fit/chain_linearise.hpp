@@ -16,8 +16,4 @@ bool chain_form(const CurvatureModel& m, const Problem& p);
 void chain_linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, const std::vector<Foot>& feet,
                      const std::vector<Pose>& poses, Linearisation& lin);
 
-// The end gap's rows on the end state (twist about `origin`, curvature):
-// the end pose moves rigidly with the twist.
-void end_state_rows(const CurvatureModel& m, const Pose& end, const Point2& origin, Linearisation& lin);
-
 } // namespace railodd::geometry::fit

@@ -41,18 +41,18 @@ public:
         if (lin.chain) {
             chain_.emplace(*lin.chain);
             diagonal_ = chain_->diagonal();
-            column_norms_ = diagonal_;
             gradient_ = chain_->transpose_times(lin.r);
             return;
         }
         dense_equations();
         diagonal_ = JtJ_.diagonal();
-        column_norms_ = lin.J.colwise().squaredNorm().transpose();
     }
     const Eigen::VectorXd& gradient() const noexcept { return gradient_; }
     // J's columns' squared norms: J^T J's diagonal (for a dense J summed
-    // apart from it).
-    const Eigen::VectorXd& column_norms() const noexcept { return column_norms_; }
+    // apart from it, as the geodesic acceleration always took them).
+    Eigen::VectorXd column_norms() const {
+        return chain_ ? diagonal_ : Eigen::VectorXd(lin_.J.colwise().squaredNorm().transpose());
+    }
     Eigen::VectorXd times(const Eigen::VectorXd& v) const {
         return chain_ ? chain_->times(v) : Eigen::VectorXd(lin_.J * v);
     }
@@ -104,7 +104,7 @@ private:
 
     const Linearisation& lin_;
     Eigen::MatrixXd JtJ_;
-    Eigen::VectorXd gradient_, diagonal_, column_norms_;
+    Eigen::VectorXd gradient_, diagonal_;
     std::optional<ChainSystem> chain_;
     std::optional<DenseNormal> dense_;
 };

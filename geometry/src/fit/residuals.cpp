@@ -262,6 +262,17 @@ std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& pose
     return feet;
 }
 
+std::vector<std::size_t> first_feet_on(const std::vector<Foot>& feet, std::size_t segments) {
+    std::vector<std::size_t> first_on(segments + 1, feet.size());
+    for (std::size_t i = feet.size(); i-- > 0;) {
+        first_on[feet[i].segment] = i;
+    }
+    for (std::size_t j = segments; j-- > 0;) {
+        first_on[j] = std::min(first_on[j], first_on[j + 1]);
+    }
+    return first_on;
+}
+
 Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const Problem& p, std::vector<Foot>& feet,
                         const Evaluated* known) {
     const std::vector<Pose> poses = known ? known->knots : m.knot_poses();
@@ -287,15 +298,8 @@ Linearisation linearise(const CurvatureModel& m, const ParameterMap& map, const 
         lin.C = Eigen::MatrixXd::Zero(lin.c.size(), static_cast<long>(map.size()));
     }
     const std::vector<double> base = map.get(m);
-    // The first point on or beyond each segment: a parameter of segments
-    // [a, b] leaves every point before first_on[a] where it is.
-    std::vector<std::size_t> first_on(m.segments() + 1, feet.size());
-    for (std::size_t i = feet.size(); i-- > 0;) {
-        first_on[feet[i].segment] = i;
-    }
-    for (std::size_t j = m.segments(); j-- > 0;) {
-        first_on[j] = std::min(first_on[j], first_on[j + 1]);
-    }
+    // A parameter of segments [a, b] leaves every point before first_on[a] where it is.
+    const std::vector<std::size_t> first_on = first_feet_on(feet, m.segments());
     std::vector<Point2> moved(feet.size());
     std::vector<Pose> p2(poses.size());
     Eigen::VectorXd r2(static_cast<long>(rows));

@@ -75,6 +75,10 @@ struct Linearisation {
 std::vector<Foot> feet_of(const CurvatureModel& m, const std::vector<Pose>& poses, const std::vector<Point2>& pts,
                           const SolveOptions& opt);
 
+// Per segment (and one past the last), the first foot on or beyond it: a
+// parameter of segments [a, b] moves only feet from the a-th on.
+std::vector<std::size_t> first_feet_on(const std::vector<Foot>& feet, std::size_t segments);
+
 // Residuals and Jacobian at the model, after moving the feet to the nearest
 // curve points. `known`, where given, is the model evaluated at the feet as
 // they stand (by the cost of the step that made it).
